@@ -1,0 +1,148 @@
+#include <btFracture/core/MeshCheck.h>
+
+#include <btFracture/core/Error.h>
+#include <btFracture/core/Log.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <sstream>
+#include <utility>
+
+namespace btfracture {
+namespace {
+
+struct UnionFind {
+    std::vector<int> parent;
+    explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+    int find(int i) {
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+    }
+    void unite(int a, int b) { parent[find(a)] = find(b); }
+};
+
+void appendCount(std::ostringstream& out, int count, const char* singular, const char* plural) {
+    if (count == 0) return;
+    if (out.tellp() > 0) out << ", ";
+    out << count << " " << (count == 1 ? singular : plural);
+}
+
+}  // namespace
+
+bool MeshDefects::isClosedManifold() const {
+    return invalidIndices == 0 && nonFiniteVertices == 0 && degenerateTriangles == 0 && boundaryEdges == 0 &&
+           nonManifoldEdges == 0 && nonManifoldVertices == 0 && inconsistentEdges == 0;
+}
+
+std::string MeshDefects::describe() const {
+    std::ostringstream out;
+    appendCount(out, invalidIndices, "invalid vertex index", "invalid vertex indices");
+    appendCount(out, nonFiniteVertices, "non-finite vertex", "non-finite vertices");
+    appendCount(out, degenerateTriangles, "degenerate triangle", "degenerate triangles");
+    appendCount(out, boundaryEdges, "boundary edge (open mesh)", "boundary edges (open mesh)");
+    appendCount(out, nonManifoldEdges, "non-manifold edge", "non-manifold edges");
+    appendCount(out, nonManifoldVertices, "non-manifold vertex", "non-manifold vertices");
+    appendCount(out, inconsistentEdges, "inconsistently oriented edge", "inconsistently oriented edges");
+    return out.str();
+}
+
+MeshDefects inspectMesh(const TriangleMesh& mesh) {
+    MeshDefects d;
+    const int nv = static_cast<int>(mesh.vertices.size());
+    for (const auto& v : mesh.vertices)
+        if (!v.allFinite()) ++d.nonFiniteVertices;
+
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = Eigen::Vector3d::Constant(-INFINITY);
+    for (const auto& v : mesh.vertices)
+        if (v.allFinite()) {
+            lo = lo.cwiseMin(v);
+            hi = hi.cwiseMax(v);
+        }
+    const double diag2 = nv > 0 ? (hi - lo).squaredNorm() : 0.0;
+
+    // Valid triangles only take part in the topological checks.
+    std::vector<int> valid;
+    for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+        const auto& tri = mesh.triangles[t];
+        if (std::any_of(tri.begin(), tri.end(), [nv](int i) { return i < 0 || i >= nv; })) {
+            ++d.invalidIndices;
+            continue;
+        }
+        valid.push_back(t);
+        const Eigen::Vector3d& a = mesh.vertices[tri[0]];
+        const Eigen::Vector3d& b = mesh.vertices[tri[1]];
+        const Eigen::Vector3d& c = mesh.vertices[tri[2]];
+        const double area2 = (b - a).cross(c - a).norm();
+        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] || !(area2 > 2e-12 * diag2)) ++d.degenerateTriangles;
+        if (a.allFinite() && b.allFinite() && c.allFinite()) d.signedVolume += a.dot(b.cross(c)) / 6.0;
+    }
+
+    // Undirected edge -> (triangles, count of a->b direction with a < b).
+    struct EdgeUse {
+        std::vector<int> triangles;
+        int forward = 0;
+    };
+    std::map<std::pair<int, int>, EdgeUse> edges;
+    for (int t : valid) {
+        const auto& tri = mesh.triangles[t];
+        for (int k = 0; k < 3; ++k) {
+            const int a = tri[k], b = tri[(k + 1) % 3];
+            if (a == b) continue;
+            EdgeUse& use = edges[{std::min(a, b), std::max(a, b)}];
+            use.triangles.push_back(t);
+            if (a < b) ++use.forward;
+        }
+    }
+    UnionFind components(static_cast<int>(mesh.triangles.size()));
+    for (const auto& [edge, use] : edges) {
+        const int n = static_cast<int>(use.triangles.size());
+        if (n == 1) ++d.boundaryEdges;
+        if (n > 2) ++d.nonManifoldEdges;
+        if (n == 2 && use.forward != 1) ++d.inconsistentEdges;
+        for (int i = 1; i < n; ++i) components.unite(use.triangles[0], use.triangles[i]);
+    }
+    std::vector<char> isRoot(mesh.triangles.size(), 0);
+    for (int t : valid) isRoot[components.find(t)] = 1;
+    d.components = static_cast<int>(std::count(isRoot.begin(), isRoot.end(), 1));
+
+    // A manifold vertex has one edge-connected fan of triangles around it.
+    std::vector<std::vector<int>> incident(nv);
+    for (int t : valid)
+        for (int i : mesh.triangles[t]) incident[i].push_back(t);
+    for (int v = 0; v < nv; ++v) {
+        const auto& fan = incident[v];
+        if (fan.size() < 2) continue;
+        UnionFind local(static_cast<int>(fan.size()));
+        std::map<int, int> firstByOther;  // other endpoint of an edge at v -> fan index
+        for (int i = 0; i < static_cast<int>(fan.size()); ++i)
+            for (int w : mesh.triangles[fan[i]]) {
+                if (w == v) continue;
+                auto [it, inserted] = firstByOther.emplace(w, i);
+                if (!inserted) local.unite(i, it->second);
+            }
+        int roots = 0;
+        for (int i = 0; i < static_cast<int>(fan.size()); ++i)
+            if (local.find(i) == i) ++roots;
+        if (roots > 1) ++d.nonManifoldVertices;
+    }
+    return d;
+}
+
+void requireClosedSolid(TriangleMesh& mesh) {
+    const std::string source = mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name;
+    if (mesh.triangles.empty()) throw Error(source + ": mesh has no triangles");
+    const MeshDefects d = inspectMesh(mesh);
+    if (!d.isClosedManifold())
+        throw Error(source + ": not a closed, consistently oriented manifold triangle mesh: " + d.describe());
+    if (d.signedVolume < 0.0) {
+        for (auto& tri : mesh.triangles) std::swap(tri[1], tri[2]);
+        logf(LogLevel::Warning, source, ": mesh was inside-out (signed volume ", d.signedVolume,
+             "); flipped all ", mesh.triangles.size(), " triangles to face outward");
+    }
+}
+
+}  // namespace btfracture

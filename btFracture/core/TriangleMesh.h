@@ -1,0 +1,17 @@
+#pragma once
+// Plain indexed triangle mesh (counter-clockwise seen from outside = outward normals).
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace btfracture {
+
+struct TriangleMesh {
+    std::vector<Eigen::Vector3d> vertices;
+    std::vector<std::array<int, 3>> triangles;
+    std::string name;  // where it came from (file name or generator), used in messages
+};
+
+}  // namespace btfracture

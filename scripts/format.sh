@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# clang-format over the project's own C++ files: `format.sh fix` rewrites, `format.sh check` fails on drift.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mode=${1:-check}
+mapfile -t files < <(git ls-files '*.h' '*.cpp')
+[ ${#files[@]} -gt 0 ] || exit 0
+if [ "$mode" = fix ]; then
+  clang-format -i "${files[@]}"
+else
+  clang-format --dry-run --Werror "${files[@]}"
+fi
