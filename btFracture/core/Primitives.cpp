@@ -55,41 +55,40 @@ TriangleMesh makeBox(const Eigen::Vector3d& h, int nx, int ny, int nz) {
     return mesh;
 }
 
-TriangleMesh makeIcosphere(double radius, int level) {
-    if (!(radius > 0.0) || level < 0 || level > 7)
-        throw Error("makeIcosphere: radius must be positive and level in 0..7, got radius " + std::to_string(radius) +
-                    ", level " + std::to_string(level));
-    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+TriangleMesh makeGeodesicSphere(double radius, int f) {
+    if (!(radius > 0.0) || f < 1 || f > 256)
+        throw Error("makeGeodesicSphere: radius must be positive and frequency in 1..256, got radius " +
+                    std::to_string(radius) + ", frequency " + std::to_string(f));
+    const double g = (1.0 + std::sqrt(5.0)) / 2.0;
+    const Eigen::Vector3d ico[12] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                                     {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    const int faces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                              {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                              {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
     TriangleMesh mesh;
-    mesh.name = "icosphere";
-    mesh.vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                     {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    mesh.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                      {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-    for (auto& v : mesh.vertices) v.normalize();
-    for (int l = 0; l < level; ++l) {
-        std::map<std::pair<int, int>, int> midpoint;
-        auto middle = [&](int a, int b) {
-            auto [it, inserted] = midpoint.emplace(std::make_pair(std::min(a, b), std::max(a, b)), 0);
+    mesh.name = "geodesic-sphere";
+    // A lattice point is identified by its integer weights on the icosahedron's vertices, so
+    // points on shared edges and corners are created once.
+    std::map<std::array<int, 12>, int> index;
+    for (const auto& face : faces) {
+        auto vertex = [&](int i, int j) {  // weights (f - i - j, i, j) on the face's corners
+            std::array<int, 12> key{};
+            key[face[0]] += f - i - j;
+            key[face[1]] += i;
+            key[face[2]] += j;
+            auto [it, inserted] = index.emplace(key, static_cast<int>(mesh.vertices.size()));
             if (inserted) {
-                it->second = static_cast<int>(mesh.vertices.size());
-                mesh.vertices.push_back((mesh.vertices[a] + mesh.vertices[b]).normalized());
+                const Eigen::Vector3d p = (f - i - j) * ico[face[0]] + i * ico[face[1]] + j * ico[face[2]];
+                mesh.vertices.push_back(radius * p.normalized());
             }
             return it->second;
         };
-        std::vector<std::array<int, 3>> finer;
-        finer.reserve(4 * mesh.triangles.size());
-        for (const auto& tri : mesh.triangles) {
-            const int ab = middle(tri[0], tri[1]), bc = middle(tri[1], tri[2]), ca = middle(tri[2], tri[0]);
-            finer.push_back({tri[0], ab, ca});
-            finer.push_back({tri[1], bc, ab});
-            finer.push_back({tri[2], ca, bc});
-            finer.push_back({ab, bc, ca});
-        }
-        mesh.triangles = std::move(finer);
+        for (int i = 0; i < f; ++i)
+            for (int j = 0; i + j < f; ++j) {
+                mesh.triangles.push_back({vertex(i, j), vertex(i + 1, j), vertex(i, j + 1)});
+                if (i + j + 1 < f) mesh.triangles.push_back({vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+            }
     }
-    for (auto& v : mesh.vertices) v *= radius;
     return mesh;
 }
 

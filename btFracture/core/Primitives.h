@@ -12,8 +12,9 @@ TriangleMesh makeBox(const Eigen::Vector3d& halfExtents, double cellsPerUnit = 0
 // Box with an explicit number of grid cells along x, y and z.
 TriangleMesh makeBox(const Eigen::Vector3d& halfExtents, int cellsX, int cellsY, int cellsZ);
 
-// Icosphere of the given radius [m]: the icosahedron subdivided `level` times (20 * 4^level
-// triangles), vertices projected onto the sphere.
-TriangleMesh makeIcosphere(double radius, int level);
+// Geodesic sphere of the given radius [m]: each icosahedron face split into frequency^2
+// triangles (20 f^2 in all), vertices projected onto the sphere. Frequency 2^k gives the
+// k-times subdivided icosphere.
+TriangleMesh makeGeodesicSphere(double radius, int frequency);
 
 }  // namespace btfracture

@@ -117,7 +117,7 @@ TEST(NeumannSolution, SphereUnderPressureConvergesToLame) {
     const double exact = -p * (1.0 - 2.0 * nu) * R / E;
     std::vector<double> errors;  // mean |u_r / exact - 1| over nodes
     for (int level = 1; level <= 3; ++level) {
-        const ElasticSolver solver(SurfaceMesh(makeIcosphere(R, level)), kMaterial);
+        const ElasticSolver solver(SurfaceMesh(makeGeodesicSphere(R, 1 << level)), kMaterial);
         const SurfaceMesh& m = solver.mesh();
         Eigen::VectorXd q(3 * m.triangleCount());
         for (int t = 0; t < m.triangleCount(); ++t) q.segment<3>(3 * t) = -p * m.centroid(t).normalized();
@@ -167,7 +167,7 @@ TEST(NeumannSolution, RigidMotionOfTheDataLeavesStressUnchanged) {
 }
 
 TEST(NeumannSolution, UnbalancedTractionsAreReported) {
-    const ElasticSolver solver(SurfaceMesh(makeIcosphere(0.5, 1)), kMaterial);
+    const ElasticSolver solver(SurfaceMesh(makeGeodesicSphere(0.5, 2)), kMaterial);
     Eigen::VectorXd q = Eigen::VectorXd::Zero(3 * solver.mesh().triangleCount());
     q.segment<3>(0) = Eigen::Vector3d(1e6, 0, 0);  // a single push: net force
     try {
@@ -182,7 +182,7 @@ TEST(NeumannSolution, UnbalancedTractionsAreReported) {
 }
 
 TEST(NeumannSolution, BadInputGivesClearErrors) {
-    TriangleMesh open = makeIcosphere(0.5, 1);
+    TriangleMesh open = makeGeodesicSphere(0.5, 2);
     open.name = "open-sphere";
     open.triangles.pop_back();
     try {
