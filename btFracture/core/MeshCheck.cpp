@@ -2,6 +2,7 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/SelfIntersection.h>
 
 #include <Eigen/Geometry>
 
@@ -38,6 +39,8 @@ bool MeshDefects::isClosedManifold() const {
            nonManifoldEdges == 0 && nonManifoldVertices == 0 && inconsistentEdges == 0;
 }
 
+bool MeshDefects::isClosedSolid() const { return isClosedManifold() && intersectingPairs == 0; }
+
 std::string MeshDefects::describe() const {
     std::ostringstream out;
     appendCount(out, invalidIndices, "invalid vertex index", "invalid vertex indices");
@@ -47,6 +50,7 @@ std::string MeshDefects::describe() const {
     appendCount(out, nonManifoldEdges, "non-manifold edge", "non-manifold edges");
     appendCount(out, nonManifoldVertices, "non-manifold vertex", "non-manifold vertices");
     appendCount(out, inconsistentEdges, "inconsistently oriented edge", "inconsistently oriented edges");
+    appendCount(out, intersectingPairs, "self-intersecting triangle pair", "self-intersecting triangle pairs");
     return out.str();
 }
 
@@ -129,6 +133,7 @@ MeshDefects inspectMesh(const TriangleMesh& mesh) {
             if (local.find(i) == i) ++roots;
         if (roots > 1) ++d.nonManifoldVertices;
     }
+    d.intersectingPairs = static_cast<int>(findSelfIntersections(mesh).size());
     return d;
 }
 
@@ -136,8 +141,9 @@ void requireClosedSolid(TriangleMesh& mesh) {
     const std::string source = mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name;
     if (mesh.triangles.empty()) throw Error(source + ": mesh has no triangles");
     const MeshDefects d = inspectMesh(mesh);
-    if (!d.isClosedManifold())
-        throw Error(source + ": not a closed, consistently oriented manifold triangle mesh: " + d.describe());
+    if (!d.isClosedSolid())
+        throw Error(source + ": not a closed, consistently oriented, non-self-intersecting manifold triangle mesh: " +
+                    d.describe());
     if (d.signedVolume < 0.0) {
         for (auto& tri : mesh.triangles) std::swap(tri[1], tri[2]);
         logf(LogLevel::Warning, source, ": mesh was inside-out (signed volume ", d.signedVolume,
