@@ -31,8 +31,8 @@ double bestOf(int runs, const std::function<void()>& work) {
 
 int main() {
     const std::string meshes = BTFRACTURE_MESH_DIR;
-    std::printf("%-10s %9s %11s %11s %13s %11s\n", "mesh", "triangles", "parse [ms]", "check [ms]", "self-int [ms]",
-                "load [ms]");
+    std::printf("%-10s %9s %11s %11s %13s %11s\n", "mesh", "triangles", "parse [ms]", "check [ms]",
+                "self-int [ms]", "load [ms]");
     for (const char* name : {"bunny", "spot", "bowl", "column", "fandisk", "teapot", "armadillo"}) {
         const std::string path = meshes + "/" + name + ".obj";
         const TriangleMesh mesh = readObj(path);
@@ -40,8 +40,8 @@ int main() {
         const double check = bestOf(5, [&] { inspectMesh(mesh); });
         const double self = bestOf(5, [&] { findSelfIntersections(mesh); });
         const double load = bestOf(5, [&] { readMesh(path); });
-        std::printf("%-10s %9zu %11.1f %11.1f %13.1f %11.1f\n", name, mesh.triangles.size(), 1e3 * parse, 1e3 * check,
-                    1e3 * self, 1e3 * load);
+        std::printf("%-10s %9zu %11.1f %11.1f %13.1f %11.1f\n", name, mesh.triangles.size(), 1e3 * parse,
+                    1e3 * check, 1e3 * self, 1e3 * load);
         std::printf("METRIC mesh_load_%s_ms %.2f ms\n", name, 1e3 * load);
     }
     const Scene scene = readSceneFile(meshes + "/../scenes/column_bunny.json");

@@ -22,7 +22,8 @@ MassProperties computeMassProperties(const TriangleMesh& mesh) {
         volume += det / 6.0;
         firstMoment += det / 24.0 * s;
         // Tetrahedron with a vertex at the origin: V/20 (a a^T + b b^T + c c^T + s s^T).
-        secondMoment += det / 120.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+        secondMoment +=
+            det / 120.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
     }
     if (!(volume > 0.0)) {
         std::ostringstream msg;
@@ -41,7 +42,8 @@ MassProperties computeMassProperties(const TriangleMesh& mesh) {
 PrincipalAxes principalAxes(const Eigen::Matrix3d& inertia) {
     if (!inertia.allFinite()) {
         std::ostringstream msg;
-        msg << "principal axes of a non-finite inertia tensor: " << inertia.format(Eigen::IOFormat(6, 0, ", ", "; ", "", "", "[", "]"));
+        msg << "principal axes of a non-finite inertia tensor: "
+            << inertia.format(Eigen::IOFormat(6, 0, ", ", "; ", "", "", "[", "]"));
         throw Error(msg.str());
     }
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(0.5 * (inertia + inertia.transpose()));

@@ -8,7 +8,7 @@
 namespace btfracture {
 
 struct MassProperties {
-    double volume = 0.0;                                   // [m^3]
+    double volume = 0.0;                                     // [m^3]
     Eigen::Vector3d centreOfMass = Eigen::Vector3d::Zero();  // [m], mesh frame
     // Inertia tensor about the centre of mass for density 1 [m^5]; multiply by density [kg/m^3].
     Eigen::Matrix3d inertiaPerDensity = Eigen::Matrix3d::Zero();

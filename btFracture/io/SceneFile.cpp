@@ -16,10 +16,14 @@ namespace btfracture {
 
 const char* toString(SceneShapeType type) {
     switch (type) {
-        case SceneShapeType::Mesh: return "mesh";
-        case SceneShapeType::Box: return "box";
-        case SceneShapeType::Sphere: return "sphere";
-        case SceneShapeType::Plane: return "plane";
+        case SceneShapeType::Mesh:
+            return "mesh";
+        case SceneShapeType::Box:
+            return "box";
+        case SceneShapeType::Sphere:
+            return "sphere";
+        case SceneShapeType::Plane:
+            return "plane";
     }
     return "?";
 }
@@ -32,8 +36,12 @@ namespace {
 
 using Json = nlohmann::json;
 
-std::string child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
-std::string element(const std::string& path, size_t index) { return path + "[" + std::to_string(index) + "]"; }
+std::string child(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+}
+std::string element(const std::string& path, size_t index) {
+    return path + "[" + std::to_string(index) + "]";
+}
 
 // Short rendering of a JSON value for messages.
 std::string shown(const Json& value) {
@@ -55,12 +63,14 @@ public:
         if (root.contains("world")) scene.world = world(root["world"], "world");
         if (!root.contains("bodies")) fail("bodies", "missing; expected an array of bodies");
         const Json& bodies = root["bodies"];
-        if (!bodies.is_array() || bodies.empty()) fail("bodies", "expected a non-empty array of bodies, got " + shown(bodies));
+        if (!bodies.is_array() || bodies.empty())
+            fail("bodies", "expected a non-empty array of bodies, got " + shown(bodies));
         std::set<std::string> names;
         for (size_t i = 0; i < bodies.size(); ++i) {
             const std::string path = element("bodies", i);
             SceneBody b = body(bodies[i], path, i);
-            if (!names.insert(b.name).second) fail(child(path, "name"), "body name '" + b.name + "' is used twice");
+            if (!names.insert(b.name).second)
+                fail(child(path, "name"), "body name '" + b.name + "' is used twice");
             scene.bodies.push_back(std::move(b));
         }
         if (root.contains("outputs")) scene.outputs = outputs(root["outputs"], "outputs");
@@ -76,9 +86,11 @@ private:
         if (!value.is_object()) fail(path, "expected " + what + ", got " + shown(value));
     }
 
-    void allowOnly(const Json& object, const std::string& path, std::initializer_list<const char*> keys) const {
+    void allowOnly(const Json& object, const std::string& path,
+                   std::initializer_list<const char*> keys) const {
         for (const auto& item : object.items()) {
-            if (std::any_of(keys.begin(), keys.end(), [&](const char* k) { return item.key() == k; })) continue;
+            if (std::any_of(keys.begin(), keys.end(), [&](const char* k) { return item.key() == k; }))
+                continue;
             std::string known;
             for (const char* k : keys) known += std::string(known.empty() ? "" : ", ") + k;
             fail(child(path, item.key()), "unknown key (expected one of: " + known + ")");
@@ -86,7 +98,8 @@ private:
     }
 
     double number(const Json& value, const std::string& path, const std::string& expected) const {
-        if (!value.is_number() || !std::isfinite(value.get<double>())) fail(path, "expected " + expected + ", got " + shown(value));
+        if (!value.is_number() || !std::isfinite(value.get<double>()))
+            fail(path, "expected " + expected + ", got " + shown(value));
         return value.get<double>();
     }
 
@@ -99,14 +112,16 @@ private:
 
     int integer(const Json& value, const std::string& path, int minimum) const {
         const std::string expected = "an integer >= " + std::to_string(minimum);
-        if (!value.is_number_integer() || value.get<long long>() < minimum || value.get<long long>() > 1000000000LL)
+        if (!value.is_number_integer() || value.get<long long>() < minimum ||
+            value.get<long long>() > 1000000000LL)
             fail(path, "expected " + expected + ", got " + shown(value));
         return static_cast<int>(value.get<long long>());
     }
 
     Eigen::Vector3d vector3(const Json& value, const std::string& path, const std::string& unit) const {
         const std::string expected = "an array of 3 numbers" + (unit.empty() ? "" : " [" + unit + "]");
-        if (!value.is_array() || value.size() != 3) fail(path, "expected " + expected + ", got " + shown(value));
+        if (!value.is_array() || value.size() != 3)
+            fail(path, "expected " + expected + ", got " + shown(value));
         Eigen::Vector3d v;
         for (int k = 0; k < 3; ++k) v[k] = number(value[k], element(path, k), "a number");
         return v;
@@ -148,27 +163,35 @@ private:
 
     SceneShape shape(const Json& value, const std::string& path) const {
         requireObject(value, path, "an object with a \"type\"");
-        if (!value.contains("type")) fail(child(path, "type"), "missing; expected \"mesh\", \"box\", \"sphere\" or \"plane\"");
+        if (!value.contains("type"))
+            fail(child(path, "type"), "missing; expected \"mesh\", \"box\", \"sphere\" or \"plane\"");
         const std::string type = text(value["type"], child(path, "type"));
         SceneShape s;
         if (type == "mesh") {
             s.type = SceneShapeType::Mesh;
             allowOnly(value, path, {"type", "file", "collision"});
-            if (!value.contains("file")) fail(child(path, "file"), "missing; expected the path of an .obj or .ply file");
+            if (!value.contains("file"))
+                fail(child(path, "file"), "missing; expected the path of an .obj or .ply file");
             s.meshFile = meshPath(text(value["file"], child(path, "file")), child(path, "file"));
             if (value.contains("collision")) {
                 const std::string collision = text(value["collision"], child(path, "collision"));
-                if (collision == "convex_hull") s.collision = SceneMeshCollision::ConvexHull;
-                else if (collision == "gimpact") s.collision = SceneMeshCollision::GImpact;
-                else fail(child(path, "collision"), "expected \"convex_hull\" or \"gimpact\", got \"" + collision + "\"");
+                if (collision == "convex_hull")
+                    s.collision = SceneMeshCollision::ConvexHull;
+                else if (collision == "gimpact")
+                    s.collision = SceneMeshCollision::GImpact;
+                else
+                    fail(child(path, "collision"),
+                         "expected \"convex_hull\" or \"gimpact\", got \"" + collision + "\"");
             }
         } else if (type == "box") {
             s.type = SceneShapeType::Box;
             allowOnly(value, path, {"type", "half_extents"});
-            if (!value.contains("half_extents")) fail(child(path, "half_extents"), "missing; expected 3 half extents [m]");
+            if (!value.contains("half_extents"))
+                fail(child(path, "half_extents"), "missing; expected 3 half extents [m]");
             s.halfExtents = vector3(value["half_extents"], child(path, "half_extents"), "m");
             if (!(s.halfExtents.minCoeff() > 0.0))
-                fail(child(path, "half_extents"), "expected 3 positive half extents [m], got " + shown(value["half_extents"]));
+                fail(child(path, "half_extents"),
+                     "expected 3 positive half extents [m], got " + shown(value["half_extents"]));
         } else if (type == "sphere") {
             s.type = SceneShapeType::Sphere;
             allowOnly(value, path, {"type", "radius"});
@@ -179,13 +202,18 @@ private:
             allowOnly(value, path, {"type", "normal", "offset"});
             if (value.contains("normal")) s.normal = vector3(value["normal"], child(path, "normal"), "");
             const double length = s.normal.norm();
-            if (!(length > 1e-12)) fail(child(path, "normal"), "expected a non-zero normal vector, got " + shown(value["normal"]));
+            if (!(length > 1e-12))
+                fail(child(path, "normal"),
+                     "expected a non-zero normal vector, got " + shown(value["normal"]));
             if (std::abs(length - 1.0) > 1e-9)
-                logf(LogLevel::Info, source_, ": ", child(path, "normal"), ": normalised the plane normal (length ", length, ")");
+                logf(LogLevel::Info, source_, ": ", child(path, "normal"),
+                     ": normalised the plane normal (length ", length, ")");
             s.normal /= length;
-            if (value.contains("offset")) s.offset = number(value["offset"], child(path, "offset"), "a number [m]");
+            if (value.contains("offset"))
+                s.offset = number(value["offset"], child(path, "offset"), "a number [m]");
         } else {
-            fail(child(path, "type"), "expected \"mesh\", \"box\", \"sphere\" or \"plane\", got \"" + type + "\"");
+            fail(child(path, "type"),
+                 "expected \"mesh\", \"box\", \"sphere\" or \"plane\", got \"" + type + "\"");
         }
         return s;
     }
@@ -193,11 +221,13 @@ private:
     std::string meshPath(const std::string& file, const std::string& path) const {
         if (file.empty()) fail(path, "expected the path of an .obj or .ply file, got \"\"");
         std::filesystem::path resolved(file);
-        if (resolved.is_relative() && !baseDirectory_.empty()) resolved = std::filesystem::path(baseDirectory_) / resolved;
+        if (resolved.is_relative() && !baseDirectory_.empty())
+            resolved = std::filesystem::path(baseDirectory_) / resolved;
         resolved = resolved.lexically_normal();
         std::error_code error;
         if (!std::filesystem::is_regular_file(resolved, error))
-            fail(path, "mesh file '" + resolved.string() + "' not found (relative paths are taken from the scene's folder)");
+            fail(path, "mesh file '" + resolved.string() +
+                           "' not found (relative paths are taken from the scene's folder)");
         return resolved.string();
     }
 
@@ -210,8 +240,9 @@ private:
             const Json& q = value["quaternion"];
             const std::string qpath = child(path, "quaternion");
             if (!q.is_array() || q.size() != 4) fail(qpath, "expected [w, x, y, z], got " + shown(q));
-            Eigen::Quaterniond r(number(q[0], element(qpath, 0), "a number"), number(q[1], element(qpath, 1), "a number"),
-                                 number(q[2], element(qpath, 2), "a number"), number(q[3], element(qpath, 3), "a number"));
+            Eigen::Quaterniond r(
+                number(q[0], element(qpath, 0), "a number"), number(q[1], element(qpath, 1), "a number"),
+                number(q[2], element(qpath, 2), "a number"), number(q[3], element(qpath, 3), "a number"));
             const double norm = r.norm();
             if (!(norm > 1e-12)) fail(qpath, "expected a non-zero quaternion, got " + shown(q));
             if (std::abs(norm - 1.0) > 1e-9)
@@ -219,9 +250,12 @@ private:
             return r.normalized();
         }
         if (!value.contains("axis") || !value.contains("degrees"))
-            fail(path, "expected {\"axis\": [x, y, z], \"degrees\": a} or {\"quaternion\": [w, x, y, z]}, got " + shown(value));
+            fail(path,
+                 "expected {\"axis\": [x, y, z], \"degrees\": a} or {\"quaternion\": [w, x, y, z]}, got " +
+                     shown(value));
         const Eigen::Vector3d axis = vector3(value["axis"], child(path, "axis"), "");
-        if (!(axis.norm() > 1e-12)) fail(child(path, "axis"), "expected a non-zero axis, got " + shown(value["axis"]));
+        if (!(axis.norm() > 1e-12))
+            fail(child(path, "axis"), "expected a non-zero axis, got " + shown(value["axis"]));
         const double degrees = number(value["degrees"], child(path, "degrees"), "an angle [degrees]");
         return Eigen::Quaterniond(Eigen::AngleAxisd(degrees * M_PI / 180.0, axis.normalized()));
     }
@@ -229,15 +263,21 @@ private:
     Material material(const Json& value, const std::string& path, const std::string& bodyName) const {
         try {
             if (value.is_string()) return Material::preset(value.get<std::string>());
-            requireObject(value, path, "a preset name or an object {E, nu, density, strength, toughness, compressive_factor}");
-            allowOnly(value, path, {"preset", "E", "nu", "density", "strength", "toughness", "compressive_factor"});
+            requireObject(
+                value, path,
+                "a preset name or an object {E, nu, density, strength, toughness, compressive_factor}");
+            allowOnly(value, path,
+                      {"preset", "E", "nu", "density", "strength", "toughness", "compressive_factor"});
             std::optional<Material> base;
-            if (value.contains("preset")) base = Material::preset(text(value["preset"], child(path, "preset")));
+            if (value.contains("preset"))
+                base = Material::preset(text(value["preset"], child(path, "preset")));
             auto field = [&](const char* key, const std::string& unit, double fallback) {
-                if (value.contains(key)) return number(value[key], child(path, key), "a number [" + unit + "]");
+                if (value.contains(key))
+                    return number(value[key], child(path, key), "a number [" + unit + "]");
                 if (!base)
-                    fail(child(path, key), "missing; give all of E, nu, density, strength, toughness, compressive_factor, "
-                                           "or a \"preset\" to start from");
+                    fail(child(path, key),
+                         "missing; give all of E, nu, density, strength, toughness, compressive_factor, "
+                         "or a \"preset\" to start from");
                 return fallback;
             };
             const Material m = base ? *base : Material::steel();
@@ -260,36 +300,47 @@ private:
     SceneBody body(const Json& value, const std::string& path, size_t index) const {
         requireObject(value, path, "a body object");
         allowOnly(value, path,
-                  {"name", "shape", "scale", "position", "orientation", "linear_velocity", "angular_velocity", "density",
-                   "mass", "material", "fracturable"});
+                  {"name", "shape", "scale", "position", "orientation", "linear_velocity", "angular_velocity",
+                   "density", "mass", "material", "fracturable"});
         SceneBody b;
-        b.name = value.contains("name") ? text(value["name"], child(path, "name")) : "body" + std::to_string(index);
-        if (b.name.empty() || std::any_of(b.name.begin(), b.name.end(), [](unsigned char c) { return std::isspace(c); }))
+        b.name = value.contains("name") ? text(value["name"], child(path, "name"))
+                                        : "body" + std::to_string(index);
+        if (b.name.empty() ||
+            std::any_of(b.name.begin(), b.name.end(), [](unsigned char c) { return std::isspace(c); }))
             fail(child(path, "name"), "expected a non-empty name without spaces, got \"" + b.name + "\"");
-        if (!value.contains("shape")) fail(child(path, "shape"), "missing; expected {\"type\": \"mesh\" | \"box\" | \"sphere\" | \"plane\", ...}");
+        if (!value.contains("shape"))
+            fail(child(path, "shape"),
+                 "missing; expected {\"type\": \"mesh\" | \"box\" | \"sphere\" | \"plane\", ...}");
         b.shape = shape(value["shape"], child(path, "shape"));
 
         if (b.shape.type == SceneShapeType::Plane)
-            for (const char* key : {"scale", "position", "orientation", "linear_velocity", "angular_velocity", "density"})
+            for (const char* key :
+                 {"scale", "position", "orientation", "linear_velocity", "angular_velocity", "density"})
                 if (value.contains(key))
-                    fail(child(path, key), "not allowed for a plane (a plane is static and placed by its normal and offset)");
+                    fail(child(path, key),
+                         "not allowed for a plane (a plane is static and placed by its normal and offset)");
 
         if (value.contains("scale")) {
             const Json& scale = value["scale"];
             const std::string spath = child(path, "scale");
-            b.scale = scale.is_number() ? Eigen::Vector3d::Constant(number(scale, spath, "a number")) : vector3(scale, spath, "");
-            if (!(b.scale.minCoeff() > 0.0)) fail(spath, "expected a positive number or 3 positive numbers, got " + shown(scale));
+            b.scale = scale.is_number() ? Eigen::Vector3d::Constant(number(scale, spath, "a number"))
+                                        : vector3(scale, spath, "");
+            if (!(b.scale.minCoeff() > 0.0))
+                fail(spath, "expected a positive number or 3 positive numbers, got " + shown(scale));
             if (b.shape.type == SceneShapeType::Sphere && b.scale.maxCoeff() != b.scale.minCoeff())
                 fail(spath, "a sphere takes one uniform scale, got " + shown(scale));
         }
         if (value.contains("position")) b.position = vector3(value["position"], child(path, "position"), "m");
-        if (value.contains("orientation")) b.orientation = orientation(value["orientation"], child(path, "orientation"));
+        if (value.contains("orientation"))
+            b.orientation = orientation(value["orientation"], child(path, "orientation"));
         if (value.contains("linear_velocity"))
             b.linearVelocity = vector3(value["linear_velocity"], child(path, "linear_velocity"), "m/s");
         if (value.contains("angular_velocity"))
             b.angularVelocity = vector3(value["angular_velocity"], child(path, "angular_velocity"), "rad/s");
-        if (value.contains("material")) b.material = material(value["material"], child(path, "material"), b.name);
-        if (value.contains("fracturable")) b.fracturable = boolean(value["fracturable"], child(path, "fracturable"));
+        if (value.contains("material"))
+            b.material = material(value["material"], child(path, "material"), b.name);
+        if (value.contains("fracturable"))
+            b.fracturable = boolean(value["fracturable"], child(path, "fracturable"));
 
         if (value.contains("density") && value.contains("mass"))
             fail(path, "give either \"density\" or \"mass\", not both");
@@ -297,7 +348,9 @@ private:
                                               : b.material.density();
         if (value.contains("mass")) {
             const double mass = number(value["mass"], child(path, "mass"), "a mass >= 0 [kg] (0 = static)");
-            if (mass < 0.0) fail(child(path, "mass"), "expected a mass >= 0 [kg] (0 = static), got " + shown(value["mass"]));
+            if (mass < 0.0)
+                fail(child(path, "mass"),
+                     "expected a mass >= 0 [kg] (0 = static), got " + shown(value["mass"]));
             if (b.shape.type == SceneShapeType::Plane && mass != 0.0)
                 fail(child(path, "mass"), "a plane is always static (mass 0), got " + shown(value["mass"]));
             b.mass = mass;
@@ -326,7 +379,8 @@ Json parseJson(const std::string& text, const std::string& source) {
     } catch (const Json::parse_error& e) {
         std::string message = e.what();
         const size_t bracket = message.find("] ");
-        if (message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) message = message.substr(bracket + 2);
+        if (message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)
+            message = message.substr(bracket + 2);
         throw Error(source + ": invalid JSON: " + message);
     }
 }
@@ -341,7 +395,8 @@ Scene parseScene(const std::string& jsonText, const std::string& source, const s
 }
 
 Scene readSceneFile(const std::string& path) {
-    return parseScene(readWholeFile(path, "scene file"), path, std::filesystem::path(path).parent_path().string());
+    return parseScene(readWholeFile(path, "scene file"), path,
+                      std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace btfracture

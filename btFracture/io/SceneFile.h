@@ -31,10 +31,10 @@ struct SceneShape {
     SceneShapeType type = SceneShapeType::Box;
     std::string meshFile;  // Mesh: path of the .obj/.ply (relative paths resolved against the scene's folder)
     SceneMeshCollision collision = SceneMeshCollision::ConvexHull;  // Mesh
-    Eigen::Vector3d halfExtents{0.5, 0.5, 0.5};  // Box [m], before scale
-    double radius = 0.5;                         // Sphere [m], before scale
-    Eigen::Vector3d normal{0.0, 1.0, 0.0};       // Plane: unit normal, world frame
-    double offset = 0.0;                         // Plane: points x with normal . x = offset [m]
+    Eigen::Vector3d halfExtents{0.5, 0.5, 0.5};                     // Box [m], before scale
+    double radius = 0.5;                                            // Sphere [m], before scale
+    Eigen::Vector3d normal{0.0, 1.0, 0.0};                          // Plane: unit normal, world frame
+    double offset = 0.0;  // Plane: points x with normal . x = offset [m]
 };
 
 struct SceneBody {
@@ -42,10 +42,10 @@ struct SceneBody {
     SceneShape shape;
     Eigen::Vector3d scale{1.0, 1.0, 1.0};  // applied to the shape in its own frame (uniform for spheres)
     // Pose of the shape's own frame (the mesh file's coordinates) in the world.
-    Eigen::Vector3d position = Eigen::Vector3d::Zero();                  // [m]
-    Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();     // unit
-    Eigen::Vector3d linearVelocity = Eigen::Vector3d::Zero();            // of the centre of mass [m/s]
-    Eigen::Vector3d angularVelocity = Eigen::Vector3d::Zero();           // world frame [rad/s]
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();               // [m]
+    Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // unit
+    Eigen::Vector3d linearVelocity = Eigen::Vector3d::Zero();         // of the centre of mass [m/s]
+    Eigen::Vector3d angularVelocity = Eigen::Vector3d::Zero();        // world frame [rad/s]
     // Mass from `mass` when given (0 = static), else from `density` times the volume.
     std::optional<double> mass;  // [kg]
     double density = 0.0;        // [kg/m^3]: the body's "density", else the material's
@@ -56,7 +56,8 @@ struct SceneBody {
 };
 
 struct SceneOutputs {
-    std::string directory;    // empty: the runner's choice (out/<scene name>); relative to the working directory
+    std::string
+        directory;  // empty: the runner's choice (out/<scene name>); relative to the working directory
     int objEveryNSteps = 10;  // one OBJ frame every n steps (and the first and last); 0 = none
 };
 

@@ -18,7 +18,8 @@ namespace btfracture {
 namespace {
 
 btVector3 toBullet(const Eigen::Vector3d& v) {
-    return btVector3(static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z()));
+    return btVector3(static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()),
+                     static_cast<btScalar>(v.z()));
 }
 
 btTransform toBullet(const Eigen::Isometry3d& pose) {
@@ -41,8 +42,10 @@ Eigen::Isometry3d fromBullet(const btTransform& t) {
 TriangleMesh boxSurface(const Eigen::Vector3d& halfExtents) {
     TriangleMesh m;
     for (int i = 0; i < 8; ++i)
-        m.vertices.push_back(halfExtents.cwiseProduct(Eigen::Vector3d(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1)));
-    const int quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+        m.vertices.push_back(
+            halfExtents.cwiseProduct(Eigen::Vector3d(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1)));
+    const int quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
     for (const auto& q : quads) {
         m.triangles.push_back({q[0], q[1], q[2]});
         m.triangles.push_back({q[0], q[2], q[3]});
@@ -54,11 +57,11 @@ TriangleMesh boxSurface(const Eigen::Vector3d& halfExtents) {
 TriangleMesh sphereSurface(double radius, int levels) {
     const double t = (1.0 + std::sqrt(5.0)) / 2.0;
     TriangleMesh m;
-    m.vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                   {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    m.vertices = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+    m.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                   {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
     for (int level = 0; level < levels; ++level) {
         std::map<std::pair<int, int>, int> midpoints;
         auto midpoint = [&](int a, int b) {
@@ -70,7 +73,8 @@ TriangleMesh sphereSurface(double radius, int levels) {
         };
         std::vector<std::array<int, 3>> finer;
         for (const auto& tri : m.triangles) {
-            const int ab = midpoint(tri[0], tri[1]), bc = midpoint(tri[1], tri[2]), ca = midpoint(tri[2], tri[0]);
+            const int ab = midpoint(tri[0], tri[1]), bc = midpoint(tri[1], tri[2]),
+                      ca = midpoint(tri[2], tri[0]);
             finer.insert(finer.end(), {{tri[0], ab, ca}, {ab, tri[1], bc}, {ca, bc, tri[2]}, {ab, bc, ca}});
         }
         m.triangles = std::move(finer);
@@ -82,7 +86,8 @@ TriangleMesh sphereSurface(double radius, int levels) {
 constexpr double kPlaneDisplayHalfSize = 10.0;  // [m]
 
 TriangleMesh planeSurface(const Eigen::Vector3d& normal, double offset) {
-    const Eigen::Vector3d helper = std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d helper =
+        std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
     const Eigen::Vector3d t1 = normal.cross(helper).normalized() * kPlaneDisplayHalfSize;
     const Eigen::Vector3d t2 = normal.cross(t1);
     const Eigen::Vector3d centre = normal * offset;
@@ -93,22 +98,24 @@ TriangleMesh planeSurface(const Eigen::Vector3d& normal, double offset) {
 }
 
 // Collision margin for a mesh body [m].
-double meshMargin(double volume) { return std::min(0.04, 0.02 * std::cbrt(volume)); }
+double meshMargin(double volume) {
+    return std::min(0.04, 0.02 * std::cbrt(volume));
+}
 
-std::string bodyContext(const Scene& scene, const SceneBody& body) { return scene.file + ": body '" + body.name + "'"; }
+std::string bodyContext(const Scene& scene, const SceneBody& body) {
+    return scene.file + ": body '" + body.name + "'";
+}
 
 }  // namespace
 
-std::unique_ptr<btDiscreteDynamicsWorld> SceneWorldFactory::createWorld(btCollisionDispatcher& dispatcher,
-                                                                        btBroadphaseInterface& broadphase,
-                                                                        btConstraintSolver& solver,
-                                                                        btCollisionConfiguration& configuration,
-                                                                        const Scene&) const {
+std::unique_ptr<btDiscreteDynamicsWorld> SceneWorldFactory::createWorld(
+    btCollisionDispatcher& dispatcher, btBroadphaseInterface& broadphase, btConstraintSolver& solver,
+    btCollisionConfiguration& configuration, const Scene&) const {
     return std::make_unique<btDiscreteDynamicsWorld>(&dispatcher, &broadphase, &solver, &configuration);
 }
 
-std::unique_ptr<btRigidBody> SceneWorldFactory::createBody(const btRigidBody::btRigidBodyConstructionInfo& info,
-                                                           const SceneBody&, const TriangleMesh&) const {
+std::unique_ptr<btRigidBody> SceneWorldFactory::createBody(
+    const btRigidBody::btRigidBodyConstructionInfo& info, const SceneBody&, const TriangleMesh&) const {
     return std::make_unique<btRigidBody>(info);
 }
 
@@ -127,7 +134,7 @@ struct SceneWorld::Impl {
     std::unique_ptr<btDbvtBroadphase> broadphase;
     std::unique_ptr<btSequentialImpulseConstraintSolver> solver;
     std::unique_ptr<btDiscreteDynamicsWorld> world;
-    std::vector<ShapeStorage> shapes;                   // parallel to bodies
+    std::vector<ShapeStorage> shapes;  // parallel to bodies
     std::vector<std::unique_ptr<btRigidBody>> ownedBodies;
     std::vector<Body> bodies;
     int frames = 0;
@@ -180,13 +187,15 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
             if (shape.collision == SceneMeshCollision::ConvexHull) {
                 // Shrink the hull by the margin so that hull + margin matches the mesh.
                 std::vector<double> coordinates;
-                for (const auto& v : mesh.vertices) coordinates.insert(coordinates.end(), {v.x(), v.y(), v.z()});
+                for (const auto& v : mesh.vertices)
+                    coordinates.insert(coordinates.end(), {v.x(), v.y(), v.z()});
                 btConvexHullComputer hull;
                 const btScalar shift = hull.compute(coordinates.data(), 3 * sizeof(double),
                                                     static_cast<int>(mesh.vertices.size()),
                                                     static_cast<btScalar>(margin), btScalar(0.25));
                 if (!(shift > 0) || hull.vertices.size() < 4)
-                    throw Error(bodyContext(scene, description) + ": convex hull of '" + shape.meshFile + "' failed");
+                    throw Error(bodyContext(scene, description) + ": convex hull of '" + shape.meshFile +
+                                "' failed");
                 if (shift < 0.999 * margin)
                     logf(LogLevel::Info, bodyContext(scene, description), ": hull shrink limited to ", shift,
                          " m (margin ", margin, " m) by the hull's thickness");
@@ -196,14 +205,15 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
                 storage.shape = std::move(convex);
             } else {
                 for (const auto& v : mesh.vertices)
-                    storage.vertices.insert(storage.vertices.end(), {static_cast<btScalar>(v.x()),
-                                                                     static_cast<btScalar>(v.y()),
-                                                                     static_cast<btScalar>(v.z())});
-                for (const auto& t : mesh.triangles) storage.indices.insert(storage.indices.end(), {t[0], t[1], t[2]});
+                    storage.vertices.insert(storage.vertices.end(),
+                                            {static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()),
+                                             static_cast<btScalar>(v.z())});
+                for (const auto& t : mesh.triangles)
+                    storage.indices.insert(storage.indices.end(), {t[0], t[1], t[2]});
                 storage.meshInterface = std::make_unique<btTriangleIndexVertexArray>(
-                    static_cast<int>(mesh.triangles.size()), storage.indices.data(), static_cast<int>(3 * sizeof(int)),
-                    static_cast<int>(mesh.vertices.size()), storage.vertices.data(),
-                    static_cast<int>(3 * sizeof(btScalar)));
+                    static_cast<int>(mesh.triangles.size()), storage.indices.data(),
+                    static_cast<int>(3 * sizeof(int)), static_cast<int>(mesh.vertices.size()),
+                    storage.vertices.data(), static_cast<int>(3 * sizeof(btScalar)));
                 auto gimpact = std::make_unique<btGImpactMeshShape>(storage.meshInterface.get());
                 gimpact->setMargin(static_cast<btScalar>(margin));
                 gimpact->updateBound();
@@ -218,7 +228,8 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
             body.surface = boxSurface(h);
             body.volume = 8.0 * h.prod();
             const Eigen::Vector3d h2 = h.cwiseProduct(h);
-            unitDensityInertia = body.volume / 3.0 * Eigen::Vector3d(h2.y() + h2.z(), h2.x() + h2.z(), h2.x() + h2.y());
+            unitDensityInertia =
+                body.volume / 3.0 * Eigen::Vector3d(h2.y() + h2.z(), h2.x() + h2.z(), h2.x() + h2.y());
             break;
         }
         case SceneShapeType::Sphere: {
@@ -230,16 +241,19 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
             break;
         }
         case SceneShapeType::Plane:
-            storage.shape = std::make_unique<btStaticPlaneShape>(toBullet(shape.normal), static_cast<btScalar>(shape.offset));
+            storage.shape = std::make_unique<btStaticPlaneShape>(toBullet(shape.normal),
+                                                                 static_cast<btScalar>(shape.offset));
             body.surface = planeSurface(shape.normal, shape.offset);
             break;
     }
     body.surface.name = description.name;
 
     double mass = 0.0;
-    if (!description.isStatic()) mass = description.mass ? *description.mass : description.density * body.volume;
-    const Eigen::Vector3d inertia = body.volume > 0.0 ? Eigen::Vector3d(mass / body.volume * unitDensityInertia)
-                                                      : Eigen::Vector3d::Zero();
+    if (!description.isStatic())
+        mass = description.mass ? *description.mass : description.density * body.volume;
+    const Eigen::Vector3d inertia = body.volume > 0.0
+                                        ? Eigen::Vector3d(mass / body.volume * unitDensityInertia)
+                                        : Eigen::Vector3d::Zero();
     Eigen::Isometry3d shapeInWorld = Eigen::Isometry3d::Identity();
     shapeInWorld.translation() = description.position;
     shapeInWorld.linear() = description.orientation.toRotationMatrix();
@@ -258,7 +272,8 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
     bodies.push_back(std::move(body));
 }
 
-SceneWorld::SceneWorld(const Scene& scene, const SceneWorldFactory& factory) : impl_(std::make_unique<Impl>()) {
+SceneWorld::SceneWorld(const Scene& scene, const SceneWorldFactory& factory)
+    : impl_(std::make_unique<Impl>()) {
     Impl& w = *impl_;
     w.scene = scene;
     w.configuration = std::make_unique<btDefaultCollisionConfiguration>();
@@ -277,8 +292,12 @@ SceneWorld::SceneWorld(const Scene& scene, const SceneWorldFactory& factory) : i
 
 SceneWorld::~SceneWorld() = default;
 
-btDiscreteDynamicsWorld& SceneWorld::world() { return *impl_->world; }
-const Scene& SceneWorld::scene() const { return impl_->scene; }
+btDiscreteDynamicsWorld& SceneWorld::world() {
+    return *impl_->world;
+}
+const Scene& SceneWorld::scene() const {
+    return impl_->scene;
+}
 
 void SceneWorld::stepFrame() {
     const SceneWorldSettings& settings = impl_->scene.world;
@@ -289,9 +308,15 @@ void SceneWorld::stepFrame() {
     ++impl_->frames;
 }
 
-int SceneWorld::framesTaken() const { return impl_->frames; }
-double SceneWorld::time() const { return impl_->frames * impl_->scene.world.dt; }
-const std::vector<SceneWorld::Body>& SceneWorld::bodies() const { return impl_->bodies; }
+int SceneWorld::framesTaken() const {
+    return impl_->frames;
+}
+double SceneWorld::time() const {
+    return impl_->frames * impl_->scene.world.dt;
+}
+const std::vector<SceneWorld::Body>& SceneWorld::bodies() const {
+    return impl_->bodies;
+}
 
 TriangleMesh SceneWorld::worldSurface(size_t index) const {
     const Body& body = impl_->bodies.at(index);

@@ -46,7 +46,8 @@ public:
     // mass frame); `surface` is the body's closed surface mesh in that frame (a display square for
     // planes). SceneWorld sets the velocities and adds the body to the world afterwards.
     virtual std::unique_ptr<btRigidBody> createBody(const btRigidBody::btRigidBodyConstructionInfo& info,
-                                                    const SceneBody& description, const TriangleMesh& surface) const;
+                                                    const SceneBody& description,
+                                                    const TriangleMesh& surface) const;
 };
 
 class SceneWorld {

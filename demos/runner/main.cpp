@@ -23,8 +23,7 @@ namespace {
 
 using namespace btfracture;
 
-const char* kUsage =
-    "usage: btfracture-run SCENE [--out DIR] [--steps N] [--quiet] [--help]\n";
+const char* kUsage = "usage: btfracture-run SCENE [--out DIR] [--steps N] [--quiet] [--help]\n";
 
 const char* kHelp =
     "Simulates a btFracture scene file headless and writes one OBJ file per output frame.\n"
@@ -89,7 +88,8 @@ std::filesystem::path prepareOutput(const std::string& directory) {
     const fs::path dir(directory);
     std::error_code error;
     fs::create_directories(dir, error);
-    if (error || !fs::is_directory(dir)) throw Error("cannot create output folder '" + directory + "': " + error.message());
+    if (error || !fs::is_directory(dir))
+        throw Error("cannot create output folder '" + directory + "': " + error.message());
     int removed = 0;
     for (const auto& entry : fs::directory_iterator(dir)) {
         const std::string name = entry.path().filename().string();
@@ -104,7 +104,8 @@ std::filesystem::path prepareOutput(const std::string& directory) {
 
 void writeFrame(const SceneWorld& world, const std::filesystem::path& file) {
     ObjWriter writer(file.string());
-    for (size_t i = 0; i < world.bodies().size(); ++i) writer.addObject(world.bodies()[i].name, world.worldSurface(i));
+    for (size_t i = 0; i < world.bodies().size(); ++i)
+        writer.addObject(world.bodies()[i].name, world.worldSurface(i));
     writer.close();
 }
 
@@ -119,8 +120,9 @@ int run(const Options& options) {
     Timer total;
     Scene scene = readSceneFile(options.scene);
     if (options.steps) scene.world.steps = *options.steps;
-    const std::string directory =
-        options.out ? *options.out : !scene.outputs.directory.empty() ? scene.outputs.directory : "out/" + scene.name;
+    const std::string directory = options.out                        ? *options.out
+                                  : !scene.outputs.directory.empty() ? scene.outputs.directory
+                                                                     : "out/" + scene.name;
     const int every = scene.outputs.objEveryNSteps;
     SceneWorld world(scene);  // loads and checks every mesh before anything is written
     const std::filesystem::path dir = prepareOutput(directory);
@@ -141,7 +143,8 @@ int run(const Options& options) {
         simulationSeconds += timer.seconds();
         for (const auto& body : world.bodies())
             if (!finite(*body.rigidBody))
-                throw std::runtime_error("body '" + body.name + "' became non-finite at step " + std::to_string(step));
+                throw std::runtime_error("body '" + body.name + "' became non-finite at step " +
+                                         std::to_string(step));
         if (every > 0 && (step % every == 0 || step == scene.world.steps)) output();
     }
 
@@ -156,8 +159,9 @@ int run(const Options& options) {
         std::printf("  wall time  %.2f s (setup %.2f s, simulation %.2f s, output %.2f s)\n", total.seconds(),
                     setupSeconds, simulationSeconds, outputSeconds);
         if (frames > 0)
-            std::printf("  output     %d OBJ frames (every %d steps) in %s/ : frame_00000.obj .. frame_%05d.obj\n", frames,
-                        every, dir.string().c_str(), frames - 1);
+            std::printf(
+                "  output     %d OBJ frames (every %d steps) in %s/ : frame_00000.obj .. frame_%05d.obj\n",
+                frames, every, dir.string().c_str(), frames - 1);
         else
             std::printf("  output     none (outputs.obj_every_n_steps is 0)\n");
     }

@@ -17,7 +17,8 @@ TriangleMesh box(double a, double b, double c, const Eigen::Vector3d& origin) {
     m.name = "box";
     for (int i = 0; i < 8; ++i)
         m.vertices.push_back(origin + Eigen::Vector3d((i & 1) * a, ((i >> 1) & 1) * b, ((i >> 2) & 1) * c));
-    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (const auto& q : quads) {
         m.triangles.push_back({q[0], q[1], q[2]});
         m.triangles.push_back({q[0], q[2], q[3]});
@@ -53,8 +54,9 @@ TEST(MassProperties, PrincipalAxesDiagonaliseARotatedBox) {
     // its principal moments are the box's closed-form ones and the frame is a proper rotation.
     const double a = 2.0, b = 0.5, c = 1.5;
     TriangleMesh m = box(a, b, c, Eigen::Vector3d(-1.0, -0.25, -0.75));
-    const Eigen::Matrix3d turn =
-        (Eigen::AngleAxisd(0.5236, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.8727, Eigen::Vector3d::UnitX())).matrix();
+    const Eigen::Matrix3d turn = (Eigen::AngleAxisd(0.5236, Eigen::Vector3d::UnitZ()) *
+                                  Eigen::AngleAxisd(0.8727, Eigen::Vector3d::UnitX()))
+                                     .matrix();
     for (auto& v : m.vertices) v = turn * v;
     const MassProperties p = computeMassProperties(m);
     EXPECT_GT(std::abs(p.inertiaPerDensity(0, 1)), 1e-3);

@@ -28,7 +28,9 @@ std::string errorOf(const std::string& json) {
     return "(no error)";
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 }  // namespace
 
@@ -72,7 +74,7 @@ TEST(SceneFile, OrientationsAndMaterials) {
     EXPECT_DOUBLE_EQ(*a.mass, 3.0);
     EXPECT_DOUBLE_EQ(a.material.tensileStrength(), 4e6);
     EXPECT_DOUBLE_EQ(a.material.youngsModulus(), 3.1e9);  // the rest from the preset
-    EXPECT_EQ(a.material.name(), "a");                     // modified preset: named after the body
+    EXPECT_EQ(a.material.name(), "a");                    // modified preset: named after the body
     const SceneBody& b = s.bodies[2];
     EXPECT_DOUBLE_EQ(b.orientation.w(), 1.0);  // normalised
     EXPECT_DOUBLE_EQ(b.density, 10.0);         // the body's density wins over the material's
@@ -82,16 +84,22 @@ TEST(SceneFile, OrientationsAndMaterials) {
 }
 
 TEST(SceneFile, UnknownKeysNameTheirPath) {
-    EXPECT_TRUE(contains(errorOf(withBody(R"({"name": "b", "shape": {"type": "sphere", "radius": 1}, "velocty": [1, 0, 0]})")),
-                         "test.json: bodies[1].velocty: unknown key (expected one of: name, shape, scale,"));
-    EXPECT_TRUE(contains(errorOf(R"({"world": {"dt": 0.01, "gravty": [0, 0, 0]}, "bodies": [{"shape": {"type": "plane"}}]})"),
-                         "test.json: world.gravty: unknown key (expected one of: gravity, dt, steps, substeps)"));
-    EXPECT_TRUE(contains(errorOf(withBody(R"({"shape": {"type": "sphere", "radius": 1, "half_extents": [1, 1, 1]}})")),
-                         "test.json: bodies[1].shape.half_extents: unknown key (expected one of: type, radius)"));
-    EXPECT_TRUE(contains(errorOf(withBody(R"({"shape": {"type": "box", "half_extents": [1, 1, 1]}, "material": {"E": 1, "youngs": 2}})")),
-                         "test.json: bodies[1].material.youngs: unknown key"));
-    EXPECT_TRUE(contains(errorOf(R"({"bodies": [{"shape": {"type": "plane"}}], "output": {}})"),
-                         "test.json: output: unknown key (expected one of: description, world, bodies, outputs)"));
+    EXPECT_TRUE(contains(
+        errorOf(withBody(R"({"name": "b", "shape": {"type": "sphere", "radius": 1}, "velocty": [1, 0, 0]})")),
+        "test.json: bodies[1].velocty: unknown key (expected one of: name, shape, scale,"));
+    EXPECT_TRUE(contains(
+        errorOf(R"({"world": {"dt": 0.01, "gravty": [0, 0, 0]}, "bodies": [{"shape": {"type": "plane"}}]})"),
+        "test.json: world.gravty: unknown key (expected one of: gravity, dt, steps, substeps)"));
+    EXPECT_TRUE(contains(
+        errorOf(withBody(R"({"shape": {"type": "sphere", "radius": 1, "half_extents": [1, 1, 1]}})")),
+        "test.json: bodies[1].shape.half_extents: unknown key (expected one of: type, radius)"));
+    EXPECT_TRUE(contains(
+        errorOf(withBody(
+            R"({"shape": {"type": "box", "half_extents": [1, 1, 1]}, "material": {"E": 1, "youngs": 2}})")),
+        "test.json: bodies[1].material.youngs: unknown key"));
+    EXPECT_TRUE(
+        contains(errorOf(R"({"bodies": [{"shape": {"type": "plane"}}], "output": {}})"),
+                 "test.json: output: unknown key (expected one of: description, world, bodies, outputs)"));
 }
 
 TEST(SceneFile, WrongTypesAndBadValues) {
@@ -134,8 +142,10 @@ TEST(SceneFile, WrongTypesAndBadValues) {
         {R"({"bodies": [{"shape": {"type": "plane", "normal": [0, 0, 0]}}]})",
          "test.json: bodies[0].shape.normal: expected a non-zero normal vector, got [0,0,0]"},
         {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "orientation": {"axis": [0, 1, 0]}})"),
-         "test.json: bodies[1].orientation: expected {\"axis\": [x, y, z], \"degrees\": a} or {\"quaternion\": [w, x, y, z]}"},
-        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "orientation": {"quaternion": [0, 0, 0, 0]}})"),
+         "test.json: bodies[1].orientation: expected {\"axis\": [x, y, z], \"degrees\": a} or "
+         "{\"quaternion\": [w, x, y, z]}"},
+        {withBody(
+             R"({"shape": {"type": "sphere", "radius": 1}, "orientation": {"quaternion": [0, 0, 0, 0]}})"),
          "test.json: bodies[1].orientation.quaternion: expected a non-zero quaternion"},
         {withBody(R"({"name": "ground", "shape": {"type": "sphere", "radius": 1}})"),
          "test.json: bodies[1].name: body name 'ground' is used twice"},
@@ -153,38 +163,51 @@ TEST(SceneFile, WrongTypesAndBadValues) {
 TEST(SceneFile, BadMaterialValuesNameTheKey) {
     const std::pair<std::string, std::string> cases[] = {
         {R"({"E": -1, "nu": 0.3, "density": 900, "strength": 1e6, "toughness": 2e5, "compressive_factor": 3})",
-         "test.json: bodies[1].material: material 'rock': Young's modulus E must be positive and finite, got -1 Pa"},
+         "test.json: bodies[1].material: material 'rock': Young's modulus E must be positive and finite, got "
+         "-1 Pa"},
         {R"({"preset": "glass", "nu": 0.5})",
          "test.json: bodies[1].material: material 'rock': Poisson ratio nu must lie in (-1, 0.5), got 0.5"},
-        {R"({"preset": "glass", "toughness": 0})", "test.json: bodies[1].material: material 'rock': fracture toughness"},
+        {R"({"preset": "glass", "toughness": 0})",
+         "test.json: bodies[1].material: material 'rock': fracture toughness"},
         {R"({"preset": "glass", "strength": "high"})",
          R"(test.json: bodies[1].material.strength: expected a number [Pa], got "high")"},
-        {R"({"E": 1e9, "nu": 0.3})", "test.json: bodies[1].material.density: missing; give all of E, nu, density"},
-        {R"("granite")", "test.json: bodies[1].material: unknown material preset 'granite'; known presets: glass concrete pmma steel"},
-        {R"(42)", "test.json: bodies[1].material: expected a preset name or an object {E, nu, density, strength, toughness, "
-                  "compressive_factor}, got 42"},
+        {R"({"E": 1e9, "nu": 0.3})",
+         "test.json: bodies[1].material.density: missing; give all of E, nu, density"},
+        {R"("granite")",
+         "test.json: bodies[1].material: unknown material preset 'granite'; known presets: glass concrete "
+         "pmma steel"},
+        {R"(42)",
+         "test.json: bodies[1].material: expected a preset name or an object {E, nu, density, strength, "
+         "toughness, "
+         "compressive_factor}, got 42"},
     };
     for (const auto& [material, expected] : cases) {
-        const std::string message =
-            errorOf(withBody(R"({"name": "rock", "shape": {"type": "sphere", "radius": 1}, "material": )" + material + "}"));
+        const std::string message = errorOf(withBody(
+            R"({"name": "rock", "shape": {"type": "sphere", "radius": 1}, "material": )" + material + "}"));
         EXPECT_TRUE(contains(message, expected)) << "expected: " << expected << "\n     got: " << message;
     }
 }
 
 TEST(SceneFile, MissingFilesAndBrokenJson) {
-    const std::string missing = errorOf(withBody(R"({"shape": {"type": "mesh", "file": "../meshes/nope.obj"}})"));
-    const std::string tried = std::filesystem::path(kMeshes + "/../meshes/nope.obj").lexically_normal().string();
-    EXPECT_TRUE(contains(missing, "test.json: bodies[1].shape.file: mesh file '" + tried + "' not found")) << missing;
+    const std::string missing =
+        errorOf(withBody(R"({"shape": {"type": "mesh", "file": "../meshes/nope.obj"}})"));
+    const std::string tried =
+        std::filesystem::path(kMeshes + "/../meshes/nope.obj").lexically_normal().string();
+    EXPECT_TRUE(contains(missing, "test.json: bodies[1].shape.file: mesh file '" + tried + "' not found"))
+        << missing;
 
     const std::string syntax = errorOf("{\"bodies\": [\n  {\"shape\": }\n]}");
     EXPECT_TRUE(contains(syntax, "test.json: invalid JSON: parse error at line 2, column 13")) << syntax;
-    EXPECT_TRUE(contains(errorOf(R"({"world": {"dt": 0.1, "dt": 0.2}, "bodies": [{"shape": {"type": "plane"}}]})"),
-                         "test.json: duplicate key \"dt\""));
+    EXPECT_TRUE(
+        contains(errorOf(R"({"world": {"dt": 0.1, "dt": 0.2}, "bodies": [{"shape": {"type": "plane"}}]})"),
+                 "test.json: duplicate key \"dt\""));
     try {
         readSceneFile("no/such/scene.json");
         ADD_FAILURE() << "missing scene accepted";
     } catch (const Error& e) {
-        EXPECT_TRUE(contains(e.what(), "cannot open scene file 'no/such/scene.json': No such file or directory")) << e.what();
+        EXPECT_TRUE(
+            contains(e.what(), "cannot open scene file 'no/such/scene.json': No such file or directory"))
+            << e.what();
     }
 }
 

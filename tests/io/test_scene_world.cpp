@@ -18,7 +18,9 @@ namespace {
 const std::string kData = BTFRACTURE_TEST_DATA_DIR;
 const std::string kMeshes = BTFRACTURE_MESH_DIR;
 
-Scene sceneOf(const std::string& json) { return parseScene(json, "test.json", kData); }
+Scene sceneOf(const std::string& json) {
+    return parseScene(json, "test.json", kData);
+}
 
 Eigen::Vector3d position(const btRigidBody& body) {
     const btVector3& p = body.getCenterOfMassPosition();
@@ -72,14 +74,16 @@ TEST(SceneWorld, BoxComesToRestOnThePlaneAtItsHalfExtent) {
 TEST(SceneWorld, MeshBodiesUseExactMassPropertiesAtTheCentreOfMass) {
     const Scene scene = parseScene(R"({"bodies": [
         {"name": "cube", "shape": {"type": "mesh", "file": "formats/cube.obj"}, "density": 100},
-        {"name": "bunny", "shape": {"type": "mesh", "file": ")" + kMeshes + R"(/bunny.obj"}, "scale": [0.05, 0.04, 0.05],
+        {"name": "bunny", "shape": {"type": "mesh", "file": ")" +
+                                       kMeshes + R"(/bunny.obj"}, "scale": [0.05, 0.04, 0.05],
          "position": [1, 2, 3], "orientation": {"axis": [1, 2, 3], "degrees": 40}, "mass": 7}]})",
                                    "test.json", kData);
     SceneWorld world(scene);
     const btRigidBody& cube = *world.bodies()[0].rigidBody;
     EXPECT_NEAR(1.0 / cube.getInvMass(), 800.0, 800 * (1e-12 + kFloat));
     const double cubeInertia = 800.0 * (4.0 + 4.0) / 12.0;  // m (a^2 + b^2) / 12, side 2
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(1.0 / cube.getInvInertiaDiagLocal()[k], cubeInertia, 1e-5 * cubeInertia);
+    for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(1.0 / cube.getInvInertiaDiagLocal()[k], cubeInertia, 1e-5 * cubeInertia);
 
     TriangleMesh bunny = readMesh(kMeshes + "/bunny.obj");
     for (auto& v : bunny.vertices) v = v.cwiseProduct(Eigen::Vector3d(0.05, 0.04, 0.05));
@@ -108,9 +112,10 @@ TEST(SceneWorld, MeshBodiesUseExactMassPropertiesAtTheCentreOfMass) {
 TEST(SceneWorld, MeshCollisionShapesRestOnTheGround) {
     for (const char* collision : {"convex_hull", "gimpact"}) {
         SCOPED_TRACE(collision);
-        SceneWorld world(sceneOf(std::string(R"({"world": {"dt": 0.004}, "bodies": [{"name": "ground", "shape": {"type": "plane"}},
+        SceneWorld world(sceneOf(
+            std::string(R"({"world": {"dt": 0.004}, "bodies": [{"name": "ground", "shape": {"type": "plane"}},
             {"name": "cube", "shape": {"type": "mesh", "file": "formats/cube.obj", "collision": ")") +
-                                 collision + R"("}, "position": [0, 1.5, 0], "density": 100}]})"));
+            collision + R"("}, "position": [0, 1.5, 0], "density": 100}]})"));
         const btRigidBody& cube = *world.bodies()[1].rigidBody;
         for (int n = 0; n < 500; ++n) world.stepFrame();
         const double y = position(cube).y();
@@ -121,7 +126,8 @@ TEST(SceneWorld, MeshCollisionShapesRestOnTheGround) {
 }
 
 TEST(SceneWorld, PrimitiveSurfacesAreClosedSolids) {
-    SceneWorld world(sceneOf(R"({"bodies": [{"name": "ground", "shape": {"type": "plane", "normal": [0, 0, 1], "offset": -2}},
+    SceneWorld world(sceneOf(
+        R"({"bodies": [{"name": "ground", "shape": {"type": "plane", "normal": [0, 0, 1], "offset": -2}},
         {"name": "box", "shape": {"type": "box", "half_extents": [1, 2, 3]}, "scale": [2, 1, 1]},
         {"name": "ball", "shape": {"type": "sphere", "radius": 0.5}, "scale": 2}]})"));
     const auto& bodies = world.bodies();
@@ -144,23 +150,27 @@ TEST(SceneWorld, PrimitiveSurfacesAreClosedSolids) {
 // The factory is the single place where the world and the bodies are created.
 TEST(SceneWorld, FactoryCreatesWorldAndBodies) {
     struct TaggedBody : btRigidBody {
-        TaggedBody(const btRigidBodyConstructionInfo& info, std::string tag) : btRigidBody(info), tag(std::move(tag)) {}
+        TaggedBody(const btRigidBodyConstructionInfo& info, std::string tag)
+            : btRigidBody(info), tag(std::move(tag)) {}
         std::string tag;
     };
     struct CountingFactory : SceneWorldFactory {
         mutable int worlds = 0, bodies = 0;
         mutable size_t surfaceVertices = 0;
-        std::unique_ptr<btDiscreteDynamicsWorld> createWorld(btCollisionDispatcher& d, btBroadphaseInterface& b,
-                                                             btConstraintSolver& s, btCollisionConfiguration& c,
+        std::unique_ptr<btDiscreteDynamicsWorld> createWorld(btCollisionDispatcher& d,
+                                                             btBroadphaseInterface& b, btConstraintSolver& s,
+                                                             btCollisionConfiguration& c,
                                                              const Scene& scene) const override {
             ++worlds;
             return SceneWorldFactory::createWorld(d, b, s, c, scene);
         }
         std::unique_ptr<btRigidBody> createBody(const btRigidBody::btRigidBodyConstructionInfo& info,
-                                                const SceneBody& description, const TriangleMesh& surface) const override {
+                                                const SceneBody& description,
+                                                const TriangleMesh& surface) const override {
             ++bodies;
             surfaceVertices += surface.vertices.size();
-            return std::make_unique<TaggedBody>(info, description.name + (description.fracturable ? "*" : ""));
+            return std::make_unique<TaggedBody>(info,
+                                                description.name + (description.fracturable ? "*" : ""));
         }
     } factory;
     SceneWorld world(sceneOf(R"({"bodies": [{"name": "ground", "shape": {"type": "plane"}},
@@ -178,11 +188,13 @@ TEST(SceneWorld, FactoryCreatesWorldAndBodies) {
 
 TEST(SceneWorld, BadMeshNamesSceneBodyAndDefect) {
     try {
-        SceneWorld world(sceneOf(R"({"bodies": [{"name": "lid", "shape": {"type": "mesh", "file": "bad_meshes/open.obj"}}]})"));
+        SceneWorld world(sceneOf(
+            R"({"bodies": [{"name": "lid", "shape": {"type": "mesh", "file": "bad_meshes/open.obj"}}]})"));
         FAIL() << "open mesh accepted";
     } catch (const Error& e) {
         const std::string message = e.what();
-        EXPECT_NE(message.find("test.json: body 'lid': " + kData + "/bad_meshes/open.obj: not a closed"), std::string::npos)
+        EXPECT_NE(message.find("test.json: body 'lid': " + kData + "/bad_meshes/open.obj: not a closed"),
+                  std::string::npos)
             << message;
         EXPECT_NE(message.find("3 boundary edges"), std::string::npos) << message;
     }

@@ -10,7 +10,8 @@
 #include <cmath>
 #include <cstdio>
 
-static_assert(sizeof(btScalar) == (PACKAGE_BULLET_DOUBLE ? 8 : 4), "btScalar does not match the package's precision");
+static_assert(sizeof(btScalar) == (PACKAGE_BULLET_DOUBLE ? 8 : 4),
+              "btScalar does not match the package's precision");
 
 int fail(const char* what) {
     std::fprintf(stderr, "consumer: FAILED: %s\n", what);
@@ -18,7 +19,8 @@ int fail(const char* what) {
 }
 
 int main() {
-    if (PACKAGE_BULLET_DOUBLE != EXPECT_BULLET_DOUBLE) return fail("package reports the wrong Bullet precision");
+    if (PACKAGE_BULLET_DOUBLE != EXPECT_BULLET_DOUBLE)
+        return fail("package reports the wrong Bullet precision");
 
     // An ordinary Bullet app: a ball falls 0.5 s onto nothing.
     btDefaultCollisionConfiguration configuration;
@@ -57,6 +59,7 @@ int main() {
     const double rest = scene.bodies()[1].rigidBody->getCenterOfMassPosition().y();
     if (!(std::abs(rest - 0.25) < 1e-3)) return fail("box resting on the plane");
 
-    std::printf("consumer OK: btScalar has %d bytes, box rests at %.4f m\n", static_cast<int>(sizeof(btScalar)), rest);
+    std::printf("consumer OK: btScalar has %d bytes, box rests at %.4f m\n",
+                static_cast<int>(sizeof(btScalar)), rest);
     return 0;
 }
