@@ -1,5 +1,6 @@
 #include <btFracture/geometry/ClosestPointTree.h>
 
+#include <btFracture/core/ClosestPoint.h>
 #include <btFracture/core/Error.h>
 
 #include <algorithm>
@@ -7,29 +8,6 @@
 #include <numeric>
 
 namespace btfracture {
-
-Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                       const Eigen::Vector3d& c) {
-    // Voronoi regions of the corners, edges and face, tested in that order.
-    const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-    if (d1 <= 0.0 && d2 <= 0.0) return a;
-    const Eigen::Vector3d bp = p - b;
-    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-    if (d3 >= 0.0 && d4 <= d3) return b;
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + ab * (d1 / (d1 - d3));
-    const Eigen::Vector3d cp = p - c;
-    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-    if (d6 >= 0.0 && d5 <= d6) return c;
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + ac * (d2 / (d2 - d6));
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    const double sum = va + vb + vc;
-    if (!(sum > 0.0)) return a;  // degenerate triangle: every region test above was inconclusive
-    return a + ab * (vb / sum) + ac * (vc / sum);
-}
 
 ClosestPointTree::ClosestPointTree(const TriangleMesh& mesh) : mesh_(mesh) {
     const std::string source = mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name;
@@ -40,10 +18,10 @@ ClosestPointTree::ClosestPointTree(const TriangleMesh& mesh) : mesh_(mesh) {
         const auto& tri = mesh.triangles[t];
         for (int i : tri)
             if (i < 0 || i >= nv)
-                throw Error(source + ": triangle " + std::to_string(t) + " has vertex index " + std::to_string(i) +
-                            " outside [0, " + std::to_string(nv) + ")");
-        const Eigen::Vector3d n =
-            (mesh.vertices[tri[1]] - mesh.vertices[tri[0]]).cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
+                throw Error(source + ": triangle " + std::to_string(t) + " has vertex index " +
+                            std::to_string(i) + " outside [0, " + std::to_string(nv) + ")");
+        const Eigen::Vector3d n = (mesh.vertices[tri[1]] - mesh.vertices[tri[0]])
+                                      .cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
         const double length = n.norm();
         normals_.push_back(length > 0.0 ? Eigen::Vector3d(n / length) : Eigen::Vector3d::Zero());
     }
@@ -59,7 +37,8 @@ int ClosestPointTree::build(int first, int count) {
     Eigen::AlignedBox3d box, centres;
     auto centroid = [this](int t) {
         const auto& tri = mesh_.triangles[t];
-        return Eigen::Vector3d((mesh_.vertices[tri[0]] + mesh_.vertices[tri[1]] + mesh_.vertices[tri[2]]) / 3.0);
+        return Eigen::Vector3d((mesh_.vertices[tri[0]] + mesh_.vertices[tri[1]] + mesh_.vertices[tri[2]]) /
+                               3.0);
     };
     for (int i = first; i < first + count; ++i) {
         const auto& tri = mesh_.triangles[order_[i]];
@@ -105,8 +84,8 @@ ClosestPointTree::Hit ClosestPointTree::search(const Eigen::Vector3d& query, Acc
                 const int t = order_[i];
                 if (!accept(t)) continue;
                 const auto& tri = mesh_.triangles[t];
-                const Eigen::Vector3d p = closestPointOnTriangle(query, mesh_.vertices[tri[0]], mesh_.vertices[tri[1]],
-                                                                 mesh_.vertices[tri[2]]);
+                const Eigen::Vector3d p = closestPointOnTriangle(
+                    query, mesh_.vertices[tri[0]], mesh_.vertices[tri[1]], mesh_.vertices[tri[2]]);
                 const double d2 = (p - query).squaredNorm();
                 if (d2 < best.squaredDistance || (d2 == best.squaredDistance && t < best.triangle)) {
                     best.point = p;
@@ -135,8 +114,8 @@ ClosestPointTree::Hit ClosestPointTree::closestPoint(const Eigen::Vector3d& quer
     return search(query, [](int) { return true; });
 }
 
-ClosestPointTree::Hit ClosestPointTree::closestPoint(const Eigen::Vector3d& query, const Eigen::Vector3d& normal,
-                                                     double minCosine) const {
+ClosestPointTree::Hit ClosestPointTree::closestPoint(const Eigen::Vector3d& query,
+                                                     const Eigen::Vector3d& normal, double minCosine) const {
     const Hit hit = search(query, [&](int t) { return normals_[t].dot(normal) >= minCosine; });
     return hit.triangle >= 0 ? hit : closestPoint(query);
 }

@@ -15,7 +15,7 @@ class ClosestPointTree {
 public:
     struct Hit {
         Eigen::Vector3d point = Eigen::Vector3d::Zero();  // closest surface point [mesh units]
-        int triangle = -1;                                 // index into the mesh's triangles
+        int triangle = -1;                                // index into the mesh's triangles
         double squaredDistance = 0.0;
     };
 
@@ -49,9 +49,5 @@ private:
     std::vector<int> order_;  // triangle indices, grouped by leaf
     std::vector<Node> nodes_;
 };
-
-// Closest point to p on triangle (a, b, c).
-Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                       const Eigen::Vector3d& c);
 
 }  // namespace btfracture

@@ -1,8 +1,8 @@
 #include <btFracture/geometry/HalfEdgeMesh.h>
 
+#include <btFracture/core/ClosestPoint.h>
 #include <btFracture/core/Error.h>
 #include <btFracture/core/MeshCheck.h>
-#include <btFracture/geometry/ClosestPointTree.h>
 #include <btFracture/geometry/MeshQuality.h>
 
 #include <Eigen/Geometry>
@@ -18,7 +18,8 @@ HalfEdgeMesh::HalfEdgeMesh(const TriangleMesh& mesh) {
     if (mesh.triangles.empty()) throw Error(source + ": mesh has no triangles");
     const MeshDefects defects = inspectMesh(mesh);
     if (!defects.isClosedManifold())
-        throw Error(source + ": not a closed, consistently oriented manifold triangle mesh: " + defects.describe());
+        throw Error(source +
+                    ": not a closed, consistently oriented manifold triangle mesh: " + defects.describe());
 
     // Keep only referenced vertices, in their original order.
     std::vector<int> newIndex(mesh.vertices.size(), -1);
@@ -43,7 +44,8 @@ HalfEdgeMesh::HalfEdgeMesh(const TriangleMesh& mesh) {
         edges.emplace_back(std::min(a, b), std::max(a, b), h);
     }
     std::sort(edges.begin(), edges.end());
-    for (std::size_t i = 0; i + 1 < edges.size(); i += 2) link(std::get<2>(edges[i]), std::get<2>(edges[i + 1]));
+    for (std::size_t i = 0; i + 1 < edges.size(); i += 2)
+        link(std::get<2>(edges[i]), std::get<2>(edges[i + 1]));
 }
 
 int HalfEdgeMesh::addFace(int a, int b, int c) {

@@ -50,7 +50,9 @@ public:
 
     const Eigen::Vector3d& position(int v) const { return position_[v]; }
     void setPosition(int v, const Eigen::Vector3d& p) { position_[v] = p; }
-    std::array<int, 3> faceVertices(int f) const { return {origin_[3 * f], origin_[3 * f + 1], origin_[3 * f + 2]}; }
+    std::array<int, 3> faceVertices(int f) const {
+        return {origin_[3 * f], origin_[3 * f + 1], origin_[3 * f + 2]};
+    }
 
     int valence(int v) const;
     double edgeLength(int h) const { return (position_[target(h)] - position_[origin(h)]).norm(); }
@@ -77,11 +79,11 @@ public:
 
     // Geometry of the faces an edit would leave around the moved vertices.
     struct EditPreview {
-        double minAngle = 0.0;        // smallest angle of the new faces [rad]
-        double maxEdgeLength = 0.0;   // longest edge at the moved vertex (collapse) or the new edge (flip)
-        double minNormalCosine = 1.0; // worst cosine between a face's new and old unit normals
-        double deviation = 0.0;       // how far the surface moves: distance of the removed vertex
-                                      // positions (collapse) or the old edge's midpoint (flip) to the new faces
+        double minAngle = 0.0;         // smallest angle of the new faces [rad]
+        double maxEdgeLength = 0.0;    // longest edge at the moved vertex (collapse) or the new edge (flip)
+        double minNormalCosine = 1.0;  // worst cosine between a face's new and old unit normals
+        double deviation = 0.0;        // how far the surface moves: distance of the removed vertex
+                                 // positions (collapse) or the old edge's midpoint (flip) to the new faces
     };
 
     // Topology: a collapse of h is allowed when origin and target share exactly the two apex

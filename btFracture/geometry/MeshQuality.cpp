@@ -25,7 +25,11 @@ Eigen::Vector3d triangleAngles(const Eigen::Vector3d& a, const Eigen::Vector3d& 
 }
 
 double triangleMinAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-    return triangleAngles(a, b, c).minCoeff();
+    // The smallest angle lies opposite the shortest edge.
+    const double ab = (b - a).squaredNorm(), bc = (c - b).squaredNorm(), ca = (a - c).squaredNorm();
+    if (bc <= ab && bc <= ca) return cornerAngle(a, b, c);
+    if (ca <= ab) return cornerAngle(b, c, a);
+    return cornerAngle(c, a, b);
 }
 
 MeshQuality measureQuality(const TriangleMesh& mesh, double angleThresholdDegrees) {
@@ -46,8 +50,8 @@ MeshQuality measureQuality(const TriangleMesh& mesh, double angleThresholdDegree
         const auto& tri = mesh.triangles[t];
         for (int i : tri)
             if (i < 0 || i >= nv)
-                throw Error(source + ": triangle " + std::to_string(t) + " has vertex index " + std::to_string(i) +
-                            " outside [0, " + std::to_string(nv) + ")");
+                throw Error(source + ": triangle " + std::to_string(t) + " has vertex index " +
+                            std::to_string(i) + " outside [0, " + std::to_string(nv) + ")");
         const Eigen::Vector3d angles =
             triangleAngles(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]) * toDegrees;
         const double smallest = angles.minCoeff();
@@ -72,7 +76,8 @@ MeshQuality measureQuality(const TriangleMesh& mesh, double angleThresholdDegree
         lengthSum += length;
     }
     q.meanEdgeLength = lengthSum / static_cast<double>(edges.size());
-    q.edgeLengthRatio = q.minEdgeLength > 0.0 ? q.maxEdgeLength / q.minEdgeLength : std::numeric_limits<double>::infinity();
+    q.edgeLengthRatio =
+        q.minEdgeLength > 0.0 ? q.maxEdgeLength / q.minEdgeLength : std::numeric_limits<double>::infinity();
     return q;
 }
 

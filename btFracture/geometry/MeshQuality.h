@@ -17,8 +17,8 @@ struct MeshQuality {
     double meanEdgeLength = 0.0;       // [mesh units], over undirected edges
     double edgeLengthRatio = 0.0;      // maxEdgeLength / minEdgeLength
     double angleThresholdDegrees = 0.0;
-    int trianglesBelowAngle = 0;       // triangles whose smallest angle is below the threshold
-    int worstTriangle = -1;            // triangle with the smallest angle
+    int trianglesBelowAngle = 0;  // triangles whose smallest angle is below the threshold
+    int worstTriangle = -1;       // triangle with the smallest angle
 };
 
 // Throws btfracture::Error naming mesh.name for an empty mesh or an invalid vertex index.

@@ -23,7 +23,8 @@ struct Edit {
 // that raise the region's smallest angle at all.
 Edit bestEditForFace(const HalfEdgeMesh& mesh, const ClosestPointTree& surface, int f, double edgeLength) {
     Edit best;
-    auto consider = [&best](EditKind kind, int element, const Eigen::Vector3d& position, double before, double after) {
+    auto consider = [&best](EditKind kind, int element, const Eigen::Vector3d& position, double before,
+                            double after) {
         if (after > before + kGain && (best.kind == EditKind::None || after > best.minAngle)) {
             best.kind = kind;
             best.element = element;
@@ -46,7 +47,8 @@ Edit bestEditForFace(const HalfEdgeMesh& mesh, const ClosestPointTree& surface, 
     }
     for (int v : mesh.faceVertices(f)) {
         const VertexMove move = optimizeVertexAngles(mesh, surface, v, 0.25 * edgeLength, kMinNormalCosine);
-        if (move.improved) consider(EditKind::Move, v, move.position, mesh.minAngleAroundVertex(v), move.minAngle);
+        if (move.improved)
+            consider(EditKind::Move, v, move.position, mesh.minAngleAroundVertex(v), move.minAngle);
     }
     return best;
 }
@@ -61,8 +63,8 @@ QualityRepairResult repairSmallAngles(HalfEdgeMesh& mesh, const ClosestPointTree
         // Flip the edges of bad faces wherever that raises the smaller angle of the pair.
         for (int h = 0; h < mesh.halfedgeSlots(); ++h) {
             if (!mesh.halfedgeAlive(h) || mesh.twin(h) < h) continue;
-            const double before =
-                std::min(mesh.faceMinAngle(HalfEdgeMesh::face(h)), mesh.faceMinAngle(HalfEdgeMesh::face(mesh.twin(h))));
+            const double before = std::min(mesh.faceMinAngle(HalfEdgeMesh::face(h)),
+                                           mesh.faceMinAngle(HalfEdgeMesh::face(mesh.twin(h))));
             if (before >= minAngle || !mesh.flipKeepsManifold(h)) continue;
             const HalfEdgeMesh::EditPreview flip = mesh.previewFlip(h);
             if (flip.minNormalCosine >= kMinNormalCosine && flip.minAngle > before + kGain) {
@@ -75,10 +77,17 @@ QualityRepairResult repairSmallAngles(HalfEdgeMesh& mesh, const ClosestPointTree
             if (!mesh.faceAlive(f) || mesh.faceMinAngle(f) >= minAngle) continue;
             const Edit edit = bestEditForFace(mesh, surface, f, edgeLength);
             switch (edit.kind) {
-                case EditKind::None: continue;
-                case EditKind::Flip: mesh.flipEdge(edit.element); break;
-                case EditKind::Collapse: mesh.collapseEdge(edit.element, edit.position); break;
-                case EditKind::Move: mesh.setPosition(edit.element, edit.position); break;
+                case EditKind::None:
+                    continue;
+                case EditKind::Flip:
+                    mesh.flipEdge(edit.element);
+                    break;
+                case EditKind::Collapse:
+                    mesh.collapseEdge(edit.element, edit.position);
+                    break;
+                case EditKind::Move:
+                    mesh.setPosition(edit.element, edit.position);
+                    break;
             }
             ++edits;
         }

@@ -5,6 +5,7 @@
 #include <btFracture/core/Timer.h>
 #include <btFracture/geometry/ClosestPointTree.h>
 #include <btFracture/geometry/HalfEdgeMesh.h>
+#include <btFracture/geometry/IntersectionSmoothing.h>
 #include <btFracture/geometry/MeshQuality.h>
 #include <btFracture/geometry/QualityRepair.h>
 #include <btFracture/geometry/RemeshEdits.h>
@@ -29,6 +30,7 @@ constexpr double kMinNormalCosine = 0.0;      // isotropic edits never turn a fa
 // A collapse or relaxation may move the surface by at most this times L (HalfEdgeMesh::EditPreview
 // deviation); without it, thin tips such as the bunny's ears erode a little every iteration.
 constexpr double kMaxDeviation = 0.1;
+constexpr int kMaxIntersectionRounds = 20;
 
 double surfaceArea(const TriangleMesh& mesh) {
     double area = 0.0;
@@ -54,13 +56,11 @@ void splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double 
         const auto [length, h] = queue.top();
         queue.pop();
         if (mesh.twin(h) < h || mesh.edgeLength(h) != length) continue;  // changed since it was queued
-        const int t = mesh.twin(h);
-        const Eigen::Vector3d normal =
-            mesh.faceAreaNormal(HalfEdgeMesh::face(h)).normalized() + mesh.faceAreaNormal(HalfEdgeMesh::face(t)).normalized();
-        const Eigen::Vector3d midpoint = 0.5 * (mesh.position(mesh.origin(h)) + mesh.position(mesh.target(h)));
-        // Projected only when that moves it little (a tenth of the edge), which keeps the new
-        // edges shorter than the split one; relaxation projects the rest later.
-        const Eigen::Vector3d projected = projectOntoSurface(surface, midpoint, normal);
+        // The midpoint goes onto the surface only when that moves it little (a tenth of the
+        // edge), which keeps the new edges shorter than this one; relaxation projects the rest.
+        const Eigen::Vector3d midpoint =
+            0.5 * (mesh.position(mesh.origin(h)) + mesh.position(mesh.target(h)));
+        const Eigen::Vector3d projected = edgeMidpointOnSurface(mesh, surface, h);
         const int m = mesh.splitEdge(h, (projected - midpoint).norm() <= 0.1 * length ? projected : midpoint);
         // Every edge of the four faces at m: the split renumbered some of the outer ones.
         mesh.forEachOutgoing(m, [&](int g) {
@@ -70,8 +70,8 @@ void splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double 
     }
 }
 
-void collapseShortEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double minLength, double maxLength,
-                        double maxDeviation) {
+void collapseShortEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double minLength,
+                        double maxLength, double maxDeviation) {
     constexpr int maxSweeps = 10;
     const CollapseLimits limits{maxLength, kMinNormalCosine, maxDeviation};
     for (int sweep = 0; sweep < maxSweeps; ++sweep) {
@@ -96,7 +96,8 @@ void flipTowardsRegularValence(HalfEdgeMesh& mesh) {
         if (!mesh.halfedgeAlive(h) || mesh.twin(h) < h) continue;
         const int a = mesh.valence(mesh.origin(h)), b = mesh.valence(mesh.target(h));
         const int c = mesh.valence(mesh.apex(h)), d = mesh.valence(mesh.apex(mesh.twin(h)));
-        if (deviation(a - 1, b - 1, c + 1, d + 1) >= deviation(a, b, c, d) || !mesh.flipKeepsManifold(h)) continue;
+        if (deviation(a - 1, b - 1, c + 1, d + 1) >= deviation(a, b, c, d) || !mesh.flipKeepsManifold(h))
+            continue;
         if (mesh.previewFlip(h).minNormalCosine < kMinNormalCosine) continue;
         mesh.flipEdge(h);
     }
@@ -105,7 +106,8 @@ void flipTowardsRegularValence(HalfEdgeMesh& mesh) {
 // Moves every vertex part of the way to the area-weighted centroid of its triangles, within its
 // tangent plane, and projects it onto the surface; moves that would shift the surface by more
 // than maxDeviation (at tips) are left out.
-void relaxTangentially(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double step, double maxDeviation) {
+void relaxTangentially(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double step,
+                       double maxDeviation) {
     std::vector<Eigen::Vector3d> moved(mesh.vertexSlots(), Eigen::Vector3d::Zero());
     for (int v = 0; v < mesh.vertexSlots(); ++v) {
         if (!mesh.vertexAlive(v)) continue;
@@ -120,12 +122,14 @@ void relaxTangentially(HalfEdgeMesh& mesh, const ClosestPointTree& surface, doub
         });
         const Eigen::Vector3d& p = mesh.position(v);
         const Eigen::Vector3d n = mesh.vertexNormal(v);
-        Eigen::Vector3d shift = weight > 0.0 ? Eigen::Vector3d(centroid / weight - p) : Eigen::Vector3d::Zero();
+        Eigen::Vector3d shift =
+            weight > 0.0 ? Eigen::Vector3d(centroid / weight - p) : Eigen::Vector3d::Zero();
         shift -= n * n.dot(shift);
         moved[v] = projectOntoSurface(surface, p + step * shift, n);
     }
     for (int v = 0; v < mesh.vertexSlots(); ++v)
-        if (mesh.vertexAlive(v) && moveDeviation(mesh, v, moved[v]) <= maxDeviation) mesh.setPosition(v, moved[v]);
+        if (mesh.vertexAlive(v) && moveDeviation(mesh, v, moved[v]) <= maxDeviation)
+            mesh.setPosition(v, moved[v]);
 }
 
 void requireValidArguments(const std::string& source, int targetTriangles, const RemeshOptions& options) {
@@ -133,12 +137,15 @@ void requireValidArguments(const std::string& source, int targetTriangles, const
         throw Error(source + ": BEM remesh target of " + std::to_string(targetTriangles) +
                     " triangles is below the minimum of " + std::to_string(kMinTargetTriangles));
     if (options.iterations < 1)
-        throw Error(source + ": RemeshOptions.iterations must be >= 1, got " + std::to_string(options.iterations));
+        throw Error(source + ": RemeshOptions.iterations must be >= 1, got " +
+                    std::to_string(options.iterations));
     if (!(options.minAngleDegrees > 0.0 && options.minAngleDegrees <= kMaxMinAngleDegrees))
-        throw Error(source + ": RemeshOptions.minAngleDegrees must be in (0, " + std::to_string(kMaxMinAngleDegrees) +
-                    "], got " + std::to_string(options.minAngleDegrees));
+        throw Error(source + ": RemeshOptions.minAngleDegrees must be in (0, " +
+                    std::to_string(kMaxMinAngleDegrees) + "], got " +
+                    std::to_string(options.minAngleDegrees));
     if (options.repairPasses < 0)
-        throw Error(source + ": RemeshOptions.repairPasses must be >= 0, got " + std::to_string(options.repairPasses));
+        throw Error(source + ": RemeshOptions.repairPasses must be >= 0, got " +
+                    std::to_string(options.repairPasses));
     if (!(options.smoothingStep > 0.0 && options.smoothingStep <= 1.0))
         throw Error(source + ": RemeshOptions.smoothingStep must be in (0, 1], got " +
                     std::to_string(options.smoothingStep));
@@ -160,7 +167,8 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
     double edgeLength = std::sqrt(4.0 * area / (std::sqrt(3.0) * targetTriangles));
     for (int iteration = 0; iteration < options.iterations; ++iteration) {
         splitLongEdges(mesh, surface, kSplitAbove * edgeLength);
-        collapseShortEdges(mesh, surface, kCollapseBelow * edgeLength, kSplitAbove * edgeLength, kMaxDeviation * edgeLength);
+        collapseShortEdges(mesh, surface, kCollapseBelow * edgeLength, kSplitAbove * edgeLength,
+                           kMaxDeviation * edgeLength);
         flipTowardsRegularValence(mesh);
         relaxTangentially(mesh, surface, options.smoothingStep, kMaxDeviation * edgeLength);
         mesh.compact();
@@ -174,11 +182,23 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
     const double minAngle = options.minAngleDegrees * M_PI / 180.0;
     const QualityRepairResult repair =
         repairSmallAngles(mesh, surface, minAngle, edgeLength, options.repairPasses);
+    const IntersectionSmoothingResult untangle =
+        smoothSelfIntersections(mesh, surface, minAngle, edgeLength, kMaxIntersectionRounds);
+    if (untangle.rounds > 0)
+        logf(LogLevel::Info, source, ": ", untangle.moves, " vertex moves and ", untangle.edits,
+             " flips or collapses in ", untangle.rounds, " rounds to separate self-intersecting triangles, ",
+             untangle.remainingPairs, " pairs left");
+    if (untangle.remainingPairs > 0)
+        logf(LogLevel::Warning, source, ": BEM remesh at ", targetTriangles, " triangles still has ",
+             untangle.remainingPairs,
+             " pairs of intersecting triangles (parts of the input closer together than the edge length ",
+             edgeLength, "); a larger target resolves them");
     if (options.fitAcrossSurface) {
         const SurfaceFitResult fit = fitAcrossSurface(mesh, surface, minAngle, kMaxDeviation * edgeLength);
         logf(LogLevel::Info, source, ": vertices moved up to ", fit.largestOffset,
              " along their normals to straddle the input surface (", fit.limitedVertices, " limited to ",
-             kMaxDeviation * edgeLength, ", ", fit.keptVertices, " kept in place to keep angles)");
+             kMaxDeviation * edgeLength, ", ", fit.keptVertices,
+             " kept in place to keep angles and avoid intersections)");
     }
     mesh.compact();
     TriangleMesh output = mesh.toTriangleMesh(source + " (BEM remesh)");
@@ -186,8 +206,8 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
     const MeshQuality quality = measureQuality(output, options.minAngleDegrees);
     logf(LogLevel::Info, source, ": remeshed ", input.triangles.size(), " -> ", output.triangles.size(),
          " triangles (target ", targetTriangles, ", edge length ", edgeLength, "), min angle ",
-         quality.minAngleDegrees, " deg, mean min angle ", quality.meanMinAngleDegrees, " deg, ", repair.edits,
-         " repair edits in ", repair.passes, " passes, ", timer.seconds(), " s");
+         quality.minAngleDegrees, " deg, mean min angle ", quality.meanMinAngleDegrees, " deg, ",
+         repair.edits, " repair edits in ", repair.passes, " passes, ", timer.seconds(), " s");
     if (quality.trianglesBelowAngle > 0) {
         std::ostringstream where;
         int listed = 0;
@@ -199,12 +219,13 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
             const double angle = triangleMinAngle(a, b, c) * 180.0 / M_PI;
             if (angle >= options.minAngleDegrees) continue;
             const Eigen::Vector3d centre = (a + b + c) / 3.0;
-            where << (listed++ ? "; " : "") << "triangle " << t << " at (" << centre.x() << ", " << centre.y() << ", "
-                  << centre.z() << "): " << angle << " deg";
+            where << (listed++ ? "; " : "") << "triangle " << t << " at (" << centre.x() << ", " << centre.y()
+                  << ", " << centre.z() << "): " << angle << " deg";
         }
         logf(LogLevel::Warning, source, ": BEM remesh left ", quality.trianglesBelowAngle,
-             " triangles below the minimum angle of ", options.minAngleDegrees, " deg that no local edit could fix (",
-             where.str(), quality.trianglesBelowAngle > listed ? "; ..." : "", ")");
+             " triangles below the minimum angle of ", options.minAngleDegrees,
+             " deg that no local edit could fix (", where.str(),
+             quality.trianglesBelowAngle > listed ? "; ..." : "", ")");
     }
     return output;
 }

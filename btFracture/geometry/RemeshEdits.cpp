@@ -1,5 +1,6 @@
 #include <btFracture/geometry/RemeshEdits.h>
 
+#include <btFracture/core/ClosestPoint.h>
 #include <btFracture/geometry/MeshQuality.h>
 
 #include <Eigen/Geometry>
@@ -14,6 +15,13 @@ Eigen::Vector3d projectOntoSurface(const ClosestPointTree& surface, const Eigen:
     return surface.closestPoint(p, normal, 0.0).point;
 }
 
+Eigen::Vector3d edgeMidpointOnSurface(const HalfEdgeMesh& mesh, const ClosestPointTree& surface, int h) {
+    const Eigen::Vector3d normal = mesh.faceAreaNormal(HalfEdgeMesh::face(h)).normalized() +
+                                   mesh.faceAreaNormal(HalfEdgeMesh::face(mesh.twin(h))).normalized();
+    return projectOntoSurface(surface, 0.5 * (mesh.position(mesh.origin(h)) + mesh.position(mesh.target(h))),
+                              normal);
+}
+
 CollapsePlan planCollapse(const HalfEdgeMesh& mesh, const ClosestPointTree& surface, int h,
                           const CollapseLimits& limits, CollapseGoal goal) {
     CollapsePlan plan;
@@ -25,8 +33,8 @@ CollapsePlan planCollapse(const HalfEdgeMesh& mesh, const ClosestPointTree& surf
         mesh.position(b)};
     for (const Eigen::Vector3d& p : candidates) {
         const HalfEdgeMesh::EditPreview preview = mesh.previewCollapse(h, p);
-        if (preview.maxEdgeLength >= limits.maxEdgeLength || preview.minNormalCosine < limits.minNormalCosine ||
-            preview.deviation > limits.maxDeviation)
+        if (preview.maxEdgeLength >= limits.maxEdgeLength ||
+            preview.minNormalCosine < limits.minNormalCosine || preview.deviation > limits.maxDeviation)
             continue;
         const bool better = goal == CollapseGoal::KeepShape ? preview.deviation < plan.deviation
                                                             : preview.minAngle > plan.minAngle;
@@ -44,7 +52,8 @@ double moveDeviation(const HalfEdgeMesh& mesh, int v, const Eigen::Vector3d& q) 
     const Eigen::Vector3d& p = mesh.position(v);
     double nearest2 = std::numeric_limits<double>::infinity();
     mesh.forEachOutgoing(v, [&](int g) {
-        const Eigen::Vector3d c = closestPointOnTriangle(p, q, mesh.position(mesh.target(g)), mesh.position(mesh.apex(g)));
+        const Eigen::Vector3d c =
+            closestPointOnTriangle(p, q, mesh.position(mesh.target(g)), mesh.position(mesh.apex(g)));
         nearest2 = std::min(nearest2, (c - p).squaredNorm());
     });
     return std::sqrt(nearest2);

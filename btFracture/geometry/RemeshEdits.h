@@ -15,6 +15,9 @@ namespace btfracture {
 Eigen::Vector3d projectOntoSurface(const ClosestPointTree& surface, const Eigen::Vector3d& p,
                                    const Eigen::Vector3d& normal);
 
+// Midpoint of the edge of h projected onto the surface (facing like the two faces at h).
+Eigen::Vector3d edgeMidpointOnSurface(const HalfEdgeMesh& mesh, const ClosestPointTree& surface, int h);
+
 struct CollapseLimits {
     double maxEdgeLength;    // no edge at the merged vertex may be this long or longer
     double minNormalCosine;  // every surviving face keeps its normal within acos(this)
@@ -23,8 +26,8 @@ struct CollapseLimits {
 
 // What makes one place for a collapse better than another.
 enum class CollapseGoal {
-    KeepShape,       // least deviation from the current surface (keeps tips and ridges)
-    LargestAngle,    // largest smallest angle of the new faces
+    KeepShape,     // least deviation from the current surface (keeps tips and ridges)
+    LargestAngle,  // largest smallest angle of the new faces
 };
 
 struct CollapsePlan {

@@ -16,7 +16,9 @@ double maxDistanceToSurface(const TriangleMesh& from, const ClosestPointTree& to
         throw Error(source + ": surface distance sample spacing must be positive and finite, got " +
                     std::to_string(sampleSpacing));
     double worst2 = 0.0;
-    auto sample = [&](const Eigen::Vector3d& p) { worst2 = std::max(worst2, to.closestPoint(p).squaredDistance); };
+    auto sample = [&](const Eigen::Vector3d& p) {
+        worst2 = std::max(worst2, to.closestPoint(p).squaredDistance);
+    };
     for (const auto& v : from.vertices) sample(v);
     for (const auto& tri : from.triangles) {
         const Eigen::Vector3d& a = from.vertices[tri[0]];

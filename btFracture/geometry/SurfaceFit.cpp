@@ -1,5 +1,6 @@
 #include <btFracture/geometry/SurfaceFit.h>
 
+#include <btFracture/core/SelfIntersection.h>
 #include <btFracture/geometry/MeshQuality.h>
 
 #include <Eigen/Geometry>
@@ -80,18 +81,30 @@ SurfaceFitResult fitAcrossSurface(HalfEdgeMesh& mesh, const ClosestPointTree& su
                (angle >= minAngle || angle >= faceMinAngle[f]);
     };
     std::vector<char> kept(nv, 0);
+    auto keep = [&](int f) {
+        bool changed = false;
+        for (int v : mesh.faceVertices(f))
+            if (!kept[v]) {
+                kept[v] = 1;
+                mesh.setPosition(v, original[v]);
+                ++result.keptVertices;
+                changed = true;
+            }
+        return changed;
+    };
     for (bool changed = true; changed;) {
         changed = false;
-        for (int f = 0; f < nf; ++f) {
-            if (!mesh.faceAlive(f) || acceptable(f)) continue;
-            for (int v : mesh.faceVertices(f))
-                if (!kept[v]) {
-                    kept[v] = 1;
-                    mesh.setPosition(v, original[v]);
-                    ++result.keptVertices;
-                    changed = true;
-                }
-        }
+        for (int f = 0; f < nf; ++f)
+            if (mesh.faceAlive(f) && !acceptable(f)) changed = keep(f) || changed;
+    }
+    // Likewise for faces that the offsets made intersect others (in narrow gaps).
+    std::vector<int> faceOfTriangle;
+    for (int f = 0; f < nf; ++f)
+        if (mesh.faceAlive(f)) faceOfTriangle.push_back(f);
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (const auto& [a, b] : findSelfIntersections(mesh.toTriangleMesh("")))
+            for (int t : {a, b}) changed = keep(faceOfTriangle[t]) || changed;
     }
     return result;
 }

@@ -10,16 +10,16 @@
 namespace btfracture {
 
 struct SurfaceFitResult {
-    int limitedVertices = 0;   // offsets cut back to maxOffset
-    int keptVertices = 0;      // left where they were so that no angle fell below minAngle
+    int limitedVertices = 0;     // offsets cut back to maxOffset
+    int keptVertices = 0;        // left where they were to keep angles and avoid intersections
     double largestOffset = 0.0;  // [mesh units]
 };
 
 // The signed distance of each triangle from the surface is averaged at its edge midpoints
 // (exact for a quadratic surface); each vertex moves by minus the area-weighted mean of its
 // triangles, at most maxOffset [mesh units]. A vertex whose move would leave one of its
-// triangles with an angle below minAngle [rad] (if it was above before) or turn a triangle by
-// more than 60 degrees stays where it was.
+// triangles with an angle below minAngle [rad] (if it was above before), turn a triangle by
+// more than 60 degrees or make it intersect another triangle stays where it was.
 SurfaceFitResult fitAcrossSurface(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double minAngle,
                                   double maxOffset);
 
