@@ -2,12 +2,12 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/SelfIntersection.h>
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numeric>
 #include <sstream>
 #include <utility>
@@ -38,6 +38,8 @@ bool MeshDefects::isClosedManifold() const {
            nonManifoldEdges == 0 && nonManifoldVertices == 0 && inconsistentEdges == 0;
 }
 
+bool MeshDefects::isClosedSolid() const { return isClosedManifold() && intersectingPairs == 0; }
+
 std::string MeshDefects::describe() const {
     std::ostringstream out;
     appendCount(out, invalidIndices, "invalid vertex index", "invalid vertex indices");
@@ -47,6 +49,7 @@ std::string MeshDefects::describe() const {
     appendCount(out, nonManifoldEdges, "non-manifold edge", "non-manifold edges");
     appendCount(out, nonManifoldVertices, "non-manifold vertex", "non-manifold vertices");
     appendCount(out, inconsistentEdges, "inconsistently oriented edge", "inconsistently oriented edges");
+    appendCount(out, intersectingPairs, "self-intersecting triangle pair", "self-intersecting triangle pairs");
     return out.str();
 }
 
@@ -76,59 +79,75 @@ MeshDefects inspectMesh(const TriangleMesh& mesh) {
         const Eigen::Vector3d& a = mesh.vertices[tri[0]];
         const Eigen::Vector3d& b = mesh.vertices[tri[1]];
         const Eigen::Vector3d& c = mesh.vertices[tri[2]];
+        if (!a.allFinite() || !b.allFinite() || !c.allFinite()) continue;  // counted as non-finite vertices
         const double area2 = (b - a).cross(c - a).norm();
         if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] || !(area2 > 2e-12 * diag2)) ++d.degenerateTriangles;
-        if (a.allFinite() && b.allFinite() && c.allFinite()) d.signedVolume += a.dot(b.cross(c)) / 6.0;
+        d.signedVolume += a.dot(b.cross(c)) / 6.0;
     }
 
-    // Undirected edge -> (triangles, count of a->b direction with a < b).
+    // Every directed edge use, sorted so that the uses of one undirected edge are adjacent.
     struct EdgeUse {
-        std::vector<int> triangles;
-        int forward = 0;
+        long long key;  // min * nv + max
+        int triangle;
+        bool forward;   // traversed from the smaller to the larger index
+        bool operator<(const EdgeUse& o) const { return key < o.key || (key == o.key && triangle < o.triangle); }
     };
-    std::map<std::pair<int, int>, EdgeUse> edges;
+    std::vector<EdgeUse> uses;
+    uses.reserve(3 * valid.size());
     for (int t : valid) {
         const auto& tri = mesh.triangles[t];
         for (int k = 0; k < 3; ++k) {
             const int a = tri[k], b = tri[(k + 1) % 3];
             if (a == b) continue;
-            EdgeUse& use = edges[{std::min(a, b), std::max(a, b)}];
-            use.triangles.push_back(t);
-            if (a < b) ++use.forward;
+            uses.push_back({static_cast<long long>(std::min(a, b)) * nv + std::max(a, b), t, a < b});
         }
     }
+    std::sort(uses.begin(), uses.end());
     UnionFind components(static_cast<int>(mesh.triangles.size()));
-    for (const auto& [edge, use] : edges) {
-        const int n = static_cast<int>(use.triangles.size());
+    for (size_t first = 0, last; first < uses.size(); first = last) {
+        int forward = 0;
+        for (last = first; last < uses.size() && uses[last].key == uses[first].key; ++last) {
+            forward += uses[last].forward;
+            components.unite(uses[first].triangle, uses[last].triangle);
+        }
+        const size_t n = last - first;
         if (n == 1) ++d.boundaryEdges;
         if (n > 2) ++d.nonManifoldEdges;
-        if (n == 2 && use.forward != 1) ++d.inconsistentEdges;
-        for (int i = 1; i < n; ++i) components.unite(use.triangles[0], use.triangles[i]);
+        if (n == 2 && forward != 1) ++d.inconsistentEdges;
     }
     std::vector<char> isRoot(mesh.triangles.size(), 0);
     for (int t : valid) isRoot[components.find(t)] = 1;
     d.components = static_cast<int>(std::count(isRoot.begin(), isRoot.end(), 1));
 
     // A manifold vertex has one edge-connected fan of triangles around it.
-    std::vector<std::vector<int>> incident(nv);
+    std::vector<int> fanStart(nv + 1, 0), fanTriangles(3 * valid.size());
     for (int t : valid)
-        for (int i : mesh.triangles[t]) incident[i].push_back(t);
+        for (int i : mesh.triangles[t]) ++fanStart[i + 1];
+    std::partial_sum(fanStart.begin(), fanStart.end(), fanStart.begin());
+    std::vector<int> fill(fanStart.begin(), fanStart.end() - 1);
+    for (int t : valid)
+        for (int i : mesh.triangles[t]) fanTriangles[fill[i]++] = t;
+    std::vector<std::pair<int, int>> firstByOther;  // other endpoint of an edge at v -> fan index
     for (int v = 0; v < nv; ++v) {
-        const auto& fan = incident[v];
-        if (fan.size() < 2) continue;
-        UnionFind local(static_cast<int>(fan.size()));
-        std::map<int, int> firstByOther;  // other endpoint of an edge at v -> fan index
-        for (int i = 0; i < static_cast<int>(fan.size()); ++i)
+        const int* fan = fanTriangles.data() + fanStart[v];
+        const int size = fanStart[v + 1] - fanStart[v];
+        if (size < 2) continue;
+        UnionFind local(size);
+        firstByOther.clear();
+        for (int i = 0; i < size; ++i)
             for (int w : mesh.triangles[fan[i]]) {
                 if (w == v) continue;
-                auto [it, inserted] = firstByOther.emplace(w, i);
-                if (!inserted) local.unite(i, it->second);
+                auto it = std::find_if(firstByOther.begin(), firstByOther.end(),
+                                       [w](const std::pair<int, int>& p) { return p.first == w; });
+                if (it == firstByOther.end()) firstByOther.emplace_back(w, i);
+                else local.unite(i, it->second);
             }
         int roots = 0;
-        for (int i = 0; i < static_cast<int>(fan.size()); ++i)
+        for (int i = 0; i < size; ++i)
             if (local.find(i) == i) ++roots;
         if (roots > 1) ++d.nonManifoldVertices;
     }
+    d.intersectingPairs = static_cast<int>(findSelfIntersections(mesh).size());
     return d;
 }
 
@@ -136,8 +155,9 @@ void requireClosedSolid(TriangleMesh& mesh) {
     const std::string source = mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name;
     if (mesh.triangles.empty()) throw Error(source + ": mesh has no triangles");
     const MeshDefects d = inspectMesh(mesh);
-    if (!d.isClosedManifold())
-        throw Error(source + ": not a closed, consistently oriented manifold triangle mesh: " + d.describe());
+    if (!d.isClosedSolid())
+        throw Error(source + ": not a closed, consistently oriented, non-self-intersecting manifold triangle mesh: " +
+                    d.describe());
     if (d.signedVolume < 0.0) {
         for (auto& tri : mesh.triangles) std::swap(tri[1], tri[2]);
         logf(LogLevel::Warning, source, ": mesh was inside-out (signed volume ", d.signedVolume,

@@ -1,0 +1,40 @@
+#include <btFracture/core/MassProperties.h>
+
+#include <btFracture/core/Error.h>
+
+#include <Eigen/Geometry>
+
+#include <sstream>
+
+namespace btfracture {
+
+MassProperties computeMassProperties(const TriangleMesh& mesh) {
+    double volume = 0.0;
+    Eigen::Vector3d firstMoment = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d secondMoment = Eigen::Matrix3d::Zero();  // integral of x x^T over the solid
+    for (const auto& tri : mesh.triangles) {
+        const Eigen::Vector3d& a = mesh.vertices[tri[0]];
+        const Eigen::Vector3d& b = mesh.vertices[tri[1]];
+        const Eigen::Vector3d& c = mesh.vertices[tri[2]];
+        const double det = a.dot(b.cross(c));  // 6 x signed volume of tetrahedron (0, a, b, c)
+        const Eigen::Vector3d s = a + b + c;
+        volume += det / 6.0;
+        firstMoment += det / 24.0 * s;
+        // Tetrahedron with a vertex at the origin: V/20 (a a^T + b b^T + c c^T + s s^T).
+        secondMoment += det / 120.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+    }
+    if (!(volume > 0.0)) {
+        std::ostringstream msg;
+        msg << (mesh.name.empty() ? "<unnamed mesh>" : mesh.name)
+            << ": enclosed volume must be positive for mass properties, got " << volume;
+        throw Error(msg.str());
+    }
+    MassProperties p;
+    p.volume = volume;
+    p.centreOfMass = firstMoment / volume;
+    const Eigen::Matrix3d central = secondMoment - volume * p.centreOfMass * p.centreOfMass.transpose();
+    p.inertiaPerDensity = central.trace() * Eigen::Matrix3d::Identity() - central;
+    return p;
+}
+
+}  // namespace btfracture
