@@ -2,7 +2,7 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
-#include <btFracture/geometry/MassProperties.h>
+#include <btFracture/core/MassProperties.h>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
@@ -70,8 +70,8 @@ std::unique_ptr<btConvexHullShape> shrunkHull(const std::vector<Eigen::Vector3d>
         piece.points.emplace_back(double(hull.vertices[i].x()), double(hull.vertices[i].y()),
                                   double(hull.vertices[i].z()));
     }
-    shape->recalcLocalAabb();
     shape->setMargin(btScalar(actualMargin));
+    shape->recalcLocalAabb();
     piece.margin = actualMargin;
     return shape;
 }
@@ -96,9 +96,11 @@ std::vector<std::vector<Eigen::Vector3d>> decompose(const TriangleMesh& mesh, co
     hacd.SetNClusters(1);
     hacd.SetNVerticesPerCH(static_cast<std::size_t>(std::max(8, options.decompositionMaxHullVertices)));
     hacd.SetConcavity(options.decompositionConcavity * 1000.0);
-    hacd.SetAddExtraDistPoints(false);
-    hacd.SetAddNeighboursDistPoints(false);
-    hacd.SetAddFacesPoints(false);
+    // Extra sample points: without them HACD measures concavity at mesh vertices only and keeps
+    // a coarse L-shaped prism in one piece.
+    hacd.SetAddExtraDistPoints(true);
+    hacd.SetAddNeighboursDistPoints(true);
+    hacd.SetAddFacesPoints(true);
     if (!hacd.Compute()) throw Error(meshName(mesh) + ": HACD convex decomposition failed");
 
     std::vector<std::vector<Eigen::Vector3d>> clusters;

@@ -27,10 +27,8 @@ TriangleMesh convexHullMesh(const std::vector<Eigen::Vector3d>& points, const st
 
     TriangleMesh mesh;
     mesh.name = name;
-    for (int i = 0; i < hull.vertices.size(); ++i) {
-        const btVector3& v = hull.vertices[i];
-        mesh.vertices.emplace_back(double(v.x()), double(v.y()), double(v.z()));
-    }
+    // The hull's corners are input points: take them in double precision.
+    for (int i = 0; i < hull.vertices.size(); ++i) mesh.vertices.push_back(points[hull.original_vertex_index[i]]);
     for (int f = 0; f < hull.faces.size(); ++f) {
         const btConvexHullComputer::Edge* start = &hull.edges[hull.faces[f]];
         std::vector<int> polygon;

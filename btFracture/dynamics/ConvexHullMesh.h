@@ -10,7 +10,7 @@
 namespace btfracture {
 
 // Outward-oriented closed mesh of the convex hull of `points` (Bullet's btConvexHullComputer;
-// its coplanar faces are fan-triangulated). Vertices come back at btScalar precision. Throws
+// its coplanar faces are fan-triangulated); the corners are the input points, exactly. Throws
 // btfracture::Error naming `name` when the points are not finite or span no volume (fewer than
 // four affinely independent points).
 TriangleMesh convexHullMesh(const std::vector<Eigen::Vector3d>& points, const std::string& name);

@@ -31,9 +31,8 @@ void validate(const FractureBodySettings& s, const std::string& body) {
         problem << "voxelSize " << s.voxelSize << " m (need finite, >= 0)";
     else if (s.maxRefractureDepth < 0)
         problem << "maxRefractureDepth " << s.maxRefractureDepth << " (need >= 0)";
-    else if (s.refractureDepth < 0 || s.refractureDepth > s.maxRefractureDepth)
-        problem << "refractureDepth " << s.refractureDepth << " (need 0 .. maxRefractureDepth " << s.maxRefractureDepth
-                << ")";
+    else if (s.refractureDepth < 0)
+        problem << "refractureDepth " << s.refractureDepth << " (need >= 0)";
     if (problem.tellp() > 0) throw Error(body + ": fracture settings: " + problem.str());
 }
 

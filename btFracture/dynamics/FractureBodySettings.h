@@ -23,8 +23,11 @@ struct FractureBodySettings {
     int bemTriangleTarget = 1000;        // BEM mesh resolution [triangles]
     int collisionTriangleTarget = 5000;  // collision mesh resolution [triangles], >= BEM target
     double voxelSize = 0.0;              // level-set voxel size [m]; 0: the engine chooses
-    int maxRefractureDepth = 3;          // fragments of fragments ... up to this generation
-    int refractureDepth = 0;             // 0 for an original body, parent's + 1 for a fragment
+    // Generations: an original body has refractureDepth 0, a breakable fragment its parent's + 1
+    // (the > 95 % fragment keeps its parent's). A body breaks only while
+    // refractureDepth <= maxRefractureDepth.
+    int maxRefractureDepth = 3;
+    int refractureDepth = 0;
     // Collision shape of a non-convex body and of its non-convex fragments (convex ones always
     // get a btConvexHullShape); see CollisionShapeBuilder.h for the trade-off.
     CollisionShapeKind concaveShapeKind = CollisionShapeKind::ConvexDecomposition;

@@ -59,6 +59,8 @@ SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies, con
                             convexPenetration(shifted(a, result.pushes[i]), shifted(b, result.pushes[j]));
                         if (!pen.overlapping || pen.depth <= tolerance) continue;
                         result.remainingDepth = std::max(result.remainingDepth, pen.depth);
+                        logf(LogLevel::Debug, "fragment separation: bodies ", i, " and ", j, " overlap by ", pen.depth,
+                             " m along (", pen.direction.transpose(), ")");
                         if (capped[i] && capped[j]) continue;
                         const double mi = bodies[i].mass, mj = bodies[j].mass;
                         // Both move when free; a capped body stays, the other takes the whole push.

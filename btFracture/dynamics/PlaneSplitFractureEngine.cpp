@@ -5,7 +5,7 @@
 #include <btFracture/dynamics/ConvexHullMesh.h>
 #include <btFracture/dynamics/TractionBalance.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
-#include <btFracture/geometry/MassProperties.h>
+#include <btFracture/core/MassProperties.h>
 
 #include <Eigen/Geometry>
 
@@ -119,30 +119,29 @@ PlaneSplitFractureEngine::PlaneSplitFractureEngine(const PlaneSplitSettings& set
                     "0.5 < keepParent <= 1");
 }
 
+void PlaneSplitFractureEngine::ensureState(btFractureRigidBody& body, FractureStatistics& stats) const {
+    if (dynamic_cast<PlaneSplitState*>(body.fractureState())) return;
+    if (!isConvex(body.mesh())) throw Error(body.name() + ": PlaneSplitFractureEngine splits convex bodies only");
+    body.setFractureState(std::make_unique<PlaneSplitState>(body.mesh()));
+    ++stats.bemBuilds;
+}
+
 FractureOutcome PlaneSplitFractureEngine::fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
                                                    FractureStatistics& stats) {
     if (contacts.empty()) return {};
-    if (!dynamic_cast<PlaneSplitState*>(body.fractureState())) {
-        if (!isConvex(body.mesh()))
-            throw Error(body.name() + ": PlaneSplitFractureEngine splits convex bodies only");
-        body.setFractureState(std::make_unique<PlaneSplitState>(body.mesh()));
-        ++stats.bemBuilds;
-    }
-
-    double impulse = 0.0;
-    Eigen::Vector3d point = Eigen::Vector3d::Zero(), direction = Eigen::Vector3d::Zero();
-    for (const BodyContact& c : contacts) {
-        impulse += c.impulse;
-        point += c.impulse * c.point;
-        direction += c.impulse * c.direction;
-    }
-    if (!(impulse > 0.0)) return {};
-    point /= impulse;
-    direction = direction.norm() > 0.0 ? direction.normalized() : contacts.front().direction.normalized();
+    ensureState(body, stats);
+    // The hardest impact: resting contacts (floored approach speed) have tiny Hertz peak forces.
+    const BodyContact* impact = &contacts.front();
+    for (const BodyContact& c : contacts)
+        if (c.peakForce > impact->peakForce) impact = &c;
+    const Eigen::Vector3d direction = impact->direction.normalized();
     int axis = 0;
     direction.cwiseAbs().minCoeff(&axis);
-    const Eigen::Vector3d normal = direction.cross(Eigen::Vector3d::Unit(axis)).normalized();
+    return split(body, impact->point, direction.cross(Eigen::Vector3d::Unit(axis)));
+}
 
+FractureOutcome PlaneSplitFractureEngine::split(const btFractureRigidBody& body, const Eigen::Vector3d& point,
+                                                const Eigen::Vector3d& normal) const {
     auto [positive, negative] = splitConvexMesh(body.mesh(), point, normal);
     if (positive.triangles.empty() || negative.triangles.empty()) return {};
 
@@ -152,7 +151,7 @@ FractureOutcome PlaneSplitFractureEngine::fracture(btFractureRigidBody& body, co
         FragmentSpec spec;
         spec.volume = mp.volume;
         spec.centreOfMass = mp.centreOfMass;
-        spec.inertiaAboutCom = body.material().density() * mp.inertiaAboutCom;
+        spec.inertiaAboutCom = body.material().density() * mp.inertiaPerDensity;
         const double ofOriginal = mp.volume / body.originalVolume();
         if (mp.volume > settings_.keepParentFraction * body.volume())
             spec.cls = FragmentSpec::Class::KeepsParentSolver;

@@ -3,8 +3,8 @@
 // convex body in two by a plane through the impact point. No stresses, no cracks: whenever the
 // world calls it (impulse sum over the body's threshold), the body splits.
 //
-//  - impact point p = impulse-weighted mean of the contact points; impact direction d = the
-//    normalised sum of J * direction;
+//  - impact point p and direction d are those of the contact with the largest Hertz peak force
+//    (the hardest impact; resting contacts, e.g. on the ground, have tiny peak forces);
 //  - the cut plane contains p and d; its normal is d x e, e the body axis least aligned with d
 //    (lowest index on ties), so a slab hit on its face splits across its thinnest direction;
 //  - halves are exact closed meshes (Sutherland-Hodgman per triangle, the cap fanned around its
@@ -30,6 +30,13 @@ public:
     explicit PlaneSplitFractureEngine(const PlaneSplitSettings& settings = {});
     FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
                              FractureStatistics& stats) override;
+
+protected:
+    // The stand-in state on first use (counted as a BEM build); throws for a non-convex body.
+    void ensureState(btFractureRigidBody& body, FractureStatistics& stats) const;
+    // Both halves of `body` cut by the plane n.(x - p) = 0 (body frame), classified; empty when
+    // the plane misses the body.
+    FractureOutcome split(const btFractureRigidBody& body, const Eigen::Vector3d& p, const Eigen::Vector3d& n) const;
 
 private:
     PlaneSplitSettings settings_;

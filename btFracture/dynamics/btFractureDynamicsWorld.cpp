@@ -8,7 +8,8 @@
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/HertzContact.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
-#include <btFracture/geometry/MassProperties.h>
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/dynamics/PrincipalAxes.h>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
@@ -401,9 +402,9 @@ std::vector<btFractureRigidBody*> btFractureDynamicsWorld::spawnFragments(btFrac
 
         const bool breaks = spec.cls == FragmentSpec::Class::Breakable || spec.cls == FragmentSpec::Class::KeepsParentSolver;
         FractureBodySettings settings = parentSettings;
-        if (spec.cls == FragmentSpec::Class::Breakable) settings.refractureDepth = parentSettings.refractureDepth + 1;
-        settings.fracturable = breaks && parentSettings.fracturable && settings.refractureDepth <= settings.maxRefractureDepth;
-        settings.refractureDepth = std::min(settings.refractureDepth, settings.maxRefractureDepth);
+        // A new generation, except the > 95 % piece, which continues its parent (§5.2 (d)).
+        if (spec.cls != FragmentSpec::Class::KeepsParentSolver) settings.refractureDepth = parentSettings.refractureDepth + 1;
+        settings.fracturable = breaks && parentSettings.fracturable;
 
         const CollisionShapeKind kind = spec.cls == FragmentSpec::Class::ConvexHull || isConvex(mesh)
                                             ? CollisionShapeKind::ConvexHull

@@ -4,7 +4,8 @@
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/dynamics/ContactCurvature.h>
 #include <btFracture/dynamics/ConvexHullMesh.h>
-#include <btFracture/geometry/MassProperties.h>
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/dynamics/PrincipalAxes.h>
 
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
@@ -63,7 +64,7 @@ btFractureRigidBody::Prepared btFractureRigidBody::prepareModelMesh(TriangleMesh
     validate(settings, mesh.name);
     requireClosedSolid(mesh);
     const MassProperties mp = computeMassProperties(mesh);
-    const PrincipalAxes axes = principalAxes(mp.inertiaAboutCom);
+    const PrincipalAxes axes = principalAxes(mp.inertiaPerDensity);
 
     Prepared p;
     // x_body = R^T (x_model - c)

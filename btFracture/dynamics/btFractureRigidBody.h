@@ -72,7 +72,10 @@ public:
     const FractureBodySettings& settings() const { return settings_; }
     // Changing settings is allowed between steps; they are validated here.
     void setSettings(const FractureBodySettings& settings);
-    bool isFracturable() const { return settings_.fracturable; }
+    // fracturable and not deeper than maxRefractureDepth
+    bool isFracturable() const {
+        return settings_.fracturable && settings_.refractureDepth <= settings_.maxRefractureDepth;
+    }
 
     double volume() const { return volume_; }                  // [m^3]
     double originalVolume() const { return originalVolume_; }  // volume of the unbroken root body [m^3]

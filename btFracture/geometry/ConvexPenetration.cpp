@@ -4,6 +4,7 @@
 
 #include <ccd/ccd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -68,12 +69,18 @@ Penetration convexPenetration(const ConvexPolytope& a, const ConvexPolytope& b) 
     ccd.support2 = support;
     ccd.center1 = centre;
     ccd.center2 = centre;
-    ccd.max_iterations = 200;
-    ccd.mpr_tolerance = 1e-10;
+    // Tolerances relative to the operands' size (libccd's defaults are absolute, 1e-4).
+    double scale = a.margin + b.margin;
+    for (const ConvexPolytope* shape : {&a, &b})
+        for (const auto& p : shape->points) scale = std::max(scale, (p - (shape == &a ? pa.centre : pb.centre)).norm());
+    ccd.max_iterations = 500;
+    ccd.epa_tolerance = 1e-8 * scale;
+    ccd.mpr_tolerance = 1e-8 * scale;
+    ccd.dist_tolerance = 1e-10 * scale;
     ccd_real_t depth = 0;
     ccd_vec3_t dir, pos;
     Penetration result;
-    if (ccdMPRPenetration(&pa, &pb, &ccd, &depth, &dir, &pos) != 0) return result;
+    if (ccdGJKPenetration(&pa, &pb, &ccd, &depth, &dir, &pos) != 0) return result;
     result.overlapping = true;
     result.depth = depth;
     result.direction = Eigen::Vector3d(dir.v[0], dir.v[1], dir.v[2]);

@@ -21,10 +21,10 @@ struct Penetration {
     Eigen::Vector3d point = Eigen::Vector3d::Zero();      // a point in the overlap [m]
 };
 
-// Minkowski portal refinement (libccd ccdMPRPenetration). MPR's depth is an upper bound close
-// to the minimal one for polytopes with well-separated centres; it is exact for the box cases in
-// the tests. Throws btfracture::Error when an operand has no points, a non-finite point or a
-// negative margin.
+// GJK + EPA (libccd ccdGJKPenetration): the minimal translation, to a tolerance of 1e-8 of the
+// operands' size. (MPR, libccd's other method, measures along the line between the centres and
+// overestimates badly for thin neighbours that share a face, which fragments do.) Throws
+// btfracture::Error when an operand has no points, a non-finite point or a negative margin.
 Penetration convexPenetration(const ConvexPolytope& a, const ConvexPolytope& b);
 
 }  // namespace btfracture

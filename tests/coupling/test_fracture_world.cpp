@@ -1,0 +1,352 @@
+// The Bullet coupling end to end with the plane-split stand-in engine (PlaneSplitFractureEngine).
+#include "CouplingScene.h"
+
+#include <btFracture/core/Error.h>
+#include <btFracture/core/Log.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstring>
+
+using namespace btfracture;
+using namespace btfracture::test;
+
+namespace {
+
+// Records the world's momentum at the moment of the swap (listener runs before the replay).
+struct SwapProbe : FractureListener {
+    explicit SwapProbe(btDiscreteDynamicsWorld& w) : world(w) {}
+    void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
+                         const FractureEventInfo& info) override {
+        ++events;
+        atSwap = probe(world);
+        parentInWorld = parent.isInWorld();
+        fragmentCount = static_cast<int>(fragments.size());
+        lastInfo = info;
+    }
+    btDiscreteDynamicsWorld& world;
+    int events = 0;
+    WorldProbe atSwap;
+    bool parentInWorld = true;
+    int fragmentCount = 0;
+    FractureEventInfo lastInfo;
+};
+
+double relative(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double scale) { return (a - b).norm() / scale; }
+
+}  // namespace
+
+TEST(FractureWorld, BallBreaksSlabAboveThreshold) {
+    Scene scene;
+    SwapProbe listener(*scene.world);
+    scene.world->addFractureListener(&listener);
+    for (int i = 0; i < 10 && listener.events == 0; ++i) scene.step();
+    const FractureStatistics& s = scene.world->fractureStatistics();
+    EXPECT_EQ(listener.events, 1);
+    EXPECT_EQ(s.engineCalls, 1u);
+    EXPECT_EQ(s.fractureEvents, 1u);
+    EXPECT_EQ(s.bemBuilds, 1u);
+    EXPECT_EQ(s.replayedSteps, 1u);
+    EXPECT_EQ(listener.fragmentCount, 2);
+    EXPECT_FALSE(listener.parentInWorld);
+    EXPECT_FALSE(scene.slab->isInWorld());
+    const auto fragments = scene.fragments();
+    ASSERT_EQ(fragments.size(), 2u);
+    for (btFractureRigidBody* f : fragments) {
+        EXPECT_TRUE(f->isFracturable());  // ~50 % pieces are breakable again
+        EXPECT_EQ(f->settings().refractureDepth, 1);
+        EXPECT_NEAR(f->originalVolume(), scene.slab->volume(), 1e-12);
+    }
+    EXPECT_GT(listener.lastInfo.impulseSum, 10.0);
+    EXPECT_GE(listener.lastInfo.contacts, 1);
+}
+
+TEST(FractureWorld, BelowThresholdNothingIsCalledOrBuilt) {
+    {  // The same throw against a threshold it does not reach.
+        SceneOptions options;
+        options.impulseThreshold = 1e4;
+        Scene scene(options);
+        scene.step(60);
+        const FractureStatistics& s = scene.world->fractureStatistics();
+        EXPECT_GT(s.bodiesChecked, 0u);  // the hook looked at the slab ...
+        EXPECT_EQ(s.bodiesTriggered, 0u);
+        EXPECT_EQ(s.engineCalls, 0u);  // ... and did nothing else
+        EXPECT_EQ(s.bemBuilds, 0u);
+        EXPECT_EQ(scene.slab->fractureState(), nullptr);
+        EXPECT_TRUE(scene.slab->isInWorld());
+    }
+    {  // A gentle throw against the default threshold.
+        SceneOptions options;
+        options.ballSpeed = 0.3;
+        Scene scene(options);
+        scene.step(60);
+        EXPECT_GT(scene.world->fractureStatistics().bodiesChecked, 0u);
+        EXPECT_EQ(scene.world->fractureStatistics().engineCalls, 0u);
+        EXPECT_EQ(scene.world->fractureStatistics().bemBuilds, 0u);
+    }
+}
+
+TEST(FractureWorld, SwapConservesMassMomentumAndDoesNotPop) {
+    for (const double ballX : {0.05, -0.12}) {
+        SceneOptions options;
+        options.ballX = ballX;
+        Scene scene(options);
+        SwapProbe listener(*scene.world);
+        scene.world->addFractureListener(&listener);
+        for (int i = 0; i < 10 && listener.events == 0; ++i) {
+            const WorldProbe before = probe(*scene.world);
+            scene.step();
+            if (listener.events == 0) continue;
+            const WorldProbe& swap = listener.atSwap;
+            const WorldProbe after = probe(*scene.world);
+            EXPECT_EQ(swap.bodies, before.bodies + 1);
+            EXPECT_NEAR(swap.mass, before.mass, 1e-6 * before.mass);
+            const double pScale = std::max(before.linear.norm(), 1e-12);
+            const double lScale = std::max(before.angular.norm(), 1e-12);
+            EXPECT_LT(relative(swap.linear, before.linear, pScale), 1e-6)
+                << swap.linear.transpose() << " vs " << before.linear.transpose();
+            EXPECT_LT(relative(swap.angular, before.angular, lScale), 1e-6)
+                << swap.angular.transpose() << " vs " << before.angular.transpose();
+            // No popping: the replayed step adds no more than 1 % kinetic energy.
+            EXPECT_LE(after.kinetic, 1.01 * before.kinetic) << after.kinetic << " vs " << before.kinetic;
+            std::printf("swap at ball x = %.2f: mass %.2e, momentum %.2e, angular momentum %.2e (relative "
+                        "differences); kinetic energy after replay / before = %.4f; largest push %.2e m\n",
+                        ballX, std::abs(swap.mass - before.mass) / before.mass, relative(swap.linear, before.linear, pScale),
+                        relative(swap.angular, before.angular, lScale), after.kinetic / before.kinetic,
+                        listener.lastInfo.maxSeparationPush);
+            EXPECT_LT(listener.lastInfo.maxSeparationPush, 1e-3);
+        }
+        EXPECT_EQ(listener.events, 1) << "ball at x = " << ballX;
+    }
+}
+
+TEST(FractureWorld, SameSceneTwiceGivesBitIdenticalFragments) {
+    auto run = [] {
+        Scene scene;
+        scene.step(120);
+        std::vector<btTransform> poses;
+        for (btFractureRigidBody* f : scene.fragments()) poses.push_back(f->getWorldTransform());
+        return poses;
+    };
+    const auto first = run(), second = run();
+    ASSERT_GE(first.size(), 2u);
+    ASSERT_EQ(first.size(), second.size());
+    for (std::size_t i = 0; i < first.size(); ++i) {
+        EXPECT_EQ(std::memcmp(&first[i].getBasis(), &second[i].getBasis(), sizeof(btMatrix3x3)), 0) << i;
+        EXPECT_EQ(std::memcmp(&first[i].getOrigin(), &second[i].getOrigin(), sizeof(btVector3)), 0) << i;
+    }
+}
+
+TEST(FractureWorld, RestingContactNeverTriggers) {
+    SceneOptions options;
+    options.ballSpeed = 0.0;
+    options.ballX = 0.0;
+    options.ballZ = 0.0;
+    Scene scene(options);
+    // The ball starts 3 cm above the slab, falls and comes to rest on it: the slab carries the
+    // ball's and its own weight for 10,000 steps (42 s).
+    scene.step(10000);
+    const FractureStatistics& s = scene.world->fractureStatistics();
+    EXPECT_EQ(s.steps, 10000u);
+    EXPECT_GT(s.bodiesChecked, 100u);
+    EXPECT_EQ(s.bodiesTriggered, 0u);
+    EXPECT_EQ(s.engineCalls, 0u);
+    EXPECT_TRUE(scene.slab->isInWorld());
+    EXPECT_NEAR(double(scene.slab->getWorldTransform().getOrigin().y()), 0.025, 2e-3);
+}
+
+TEST(FractureWorld, SwitchOffAndNonFracturableCostNothing) {
+    {
+        Scene scene;
+        scene.world->setFractureEnabled(false);
+        scene.step(20);
+        EXPECT_EQ(scene.world->fractureStatistics().steps, 0u);
+        EXPECT_EQ(scene.world->fractureStatistics().bodiesChecked, 0u);
+        EXPECT_TRUE(scene.slab->isInWorld());
+    }
+    {
+        Scene scene;
+        FractureBodySettings settings = scene.slab->settings();
+        settings.fracturable = false;
+        scene.slab->setSettings(settings);
+        scene.step(20);
+        EXPECT_EQ(scene.world->fractureStatistics().bodiesChecked, 0u);
+        EXPECT_EQ(scene.world->fractureStatistics().engineCalls, 0u);
+        EXPECT_TRUE(scene.slab->isInWorld());
+    }
+    {  // No engine: logged once, nothing breaks.
+        SceneOptions options;
+        options.withEngine = false;
+        Scene scene(options);
+        scene.step(20);
+        EXPECT_EQ(scene.world->fractureStatistics().steps, 0u);
+        EXPECT_TRUE(scene.slab->isInWorld());
+    }
+}
+
+namespace {
+
+// The stand-in engine with the cut plane chosen by the test: normal along the body axis of the
+// slab's largest extent, at a given fraction of that extent (a box: volume fraction = extent
+// fraction).
+class ChipEngine : public PlaneSplitFractureEngine {
+public:
+    explicit ChipEngine(double fraction) : fraction_(fraction) {}
+    FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>&, FractureStatistics& stats) override {
+        ensureState(body, stats);
+        Eigen::Vector3d lo = body.mesh().vertices.front(), hi = lo;
+        for (const auto& v : body.mesh().vertices) {
+            lo = lo.cwiseMin(v);
+            hi = hi.cwiseMax(v);
+        }
+        int axis = 0;
+        (hi - lo).maxCoeff(&axis);
+        Eigen::Vector3d point = lo;
+        point[axis] += fraction_ * (hi - lo)[axis];
+        return split(body, point, Eigen::Vector3d::Unit(axis));
+    }
+
+private:
+    double fraction_;
+};
+
+struct FirstEvent : FractureListener {
+    std::vector<btFractureRigidBody*> fragments;
+    void onFractureEvent(btFractureRigidBody&, const std::vector<btFractureRigidBody*>& f, const FractureEventInfo&) override {
+        if (fragments.empty()) fragments = f;
+    }
+};
+
+}  // namespace
+
+TEST(FractureWorld, FragmentClassesAndRefractureDepth) {
+    struct Case {
+        double fraction;
+        FragmentSpec::Class expectedSmall;
+    };
+    // Chips of 2.5 %, 1.25 % and 0.25 % of the slab: breakable, mesh, convex hull (§5.2); the
+    // rest (> 95 %) keeps the parent's solver.
+    for (const Case& c : {Case{0.025, FragmentSpec::Class::Breakable}, Case{0.0125, FragmentSpec::Class::Mesh},
+                          Case{0.0025, FragmentSpec::Class::ConvexHull}}) {
+        SceneOptions options;
+        options.slabHalfExtents = Eigen::Vector3d(0.2, 0.025, 0.15);  // distinct principal axes
+        Scene scene(options);
+        scene.world->setFractureEngine(std::make_unique<ChipEngine>(c.fraction));
+        FirstEvent grab;
+        scene.world->addFractureListener(&grab);
+        for (int i = 0; i < 10 && grab.fragments.empty(); ++i) scene.step();
+        ASSERT_EQ(grab.fragments.size(), 2u) << c.fraction;
+        btFractureRigidBody* big = grab.fragments[0]->volume() > grab.fragments[1]->volume() ? grab.fragments[0] : grab.fragments[1];
+        btFractureRigidBody* small = big == grab.fragments[0] ? grab.fragments[1] : grab.fragments[0];
+        EXPECT_NEAR(small->volume() / scene.slab->volume(), c.fraction, 1e-9);
+        // The > 95 % piece keeps the parent's solver state (the stand-in's balancer) and depth.
+        EXPECT_NE(big->fractureState(), nullptr);
+        EXPECT_EQ(scene.slab->fractureState(), nullptr);
+        EXPECT_TRUE(big->isFracturable());
+        EXPECT_EQ(big->settings().refractureDepth, 0);
+        EXPECT_EQ(scene.world->fractureStatistics().bemBuilds, 1u);
+        const bool smallBreaks = c.expectedSmall == FragmentSpec::Class::Breakable;
+        EXPECT_EQ(small->isFracturable(), smallBreaks) << c.fraction;
+        EXPECT_EQ(small->settings().refractureDepth, 1);
+        EXPECT_EQ(small->fractureState(), nullptr);
+        EXPECT_EQ(small->shapeStorage().kind(), CollisionShapeKind::ConvexHull);  // convex pieces
+    }
+}
+
+TEST(FractureWorld, SplittingARestingSlabDoesNotPop) {
+    // No impact at all: the slab rests on the ground and is cut in two in place. Any overlap
+    // between the halves or error in their placement would show up as kinetic energy.
+    SceneOptions options;
+    options.ballX = 2.0;  // the ball lands on the ground, far away
+    options.impulseThreshold = 1e9;
+    options.maxRefractureDepth = 0;  // the halves (threshold 0 inherited) must not break again
+    Scene scene(options);
+    scene.step(240);
+    scene.world->setFractureEngine(std::make_unique<ChipEngine>(0.5));
+    FractureBodySettings settings = scene.slab->settings();
+    settings.impulseThreshold = 0.0;
+    scene.slab->setSettings(settings);
+    scene.slab->activate(true);
+    const WorldProbe before = probe(*scene.world);
+    scene.step();
+    ASSERT_EQ(scene.world->fractureStatistics().fractureEvents, 1u);
+    const WorldProbe after = probe(*scene.world);
+    double peak = after.kinetic;
+    for (int i = 0; i < 120; ++i) {
+        scene.step();
+        peak = std::max(peak, probe(*scene.world).kinetic);
+    }
+    // The slab weighs 20 kg: 1e-4 J is a speed of 3 mm/s.
+    EXPECT_LE(after.kinetic, 1.01 * before.kinetic + 1e-4) << before.kinetic << " -> " << after.kinetic;
+    EXPECT_LT(peak, 1e-4);
+    std::printf("resting split: kinetic energy %.2e J before, %.2e J after the replayed step, peak %.2e J over 0.5 s\n",
+                before.kinetic, after.kinetic, peak);
+    for (btFractureRigidBody* f : scene.fragments())
+        EXPECT_NEAR(double(f->getWorldTransform().getOrigin().y()), 0.025, 1e-3);
+}
+
+TEST(FractureWorld, RefractureStopsAtMaxDepth) {
+    {  // Depth 0: the slab breaks once, its halves never.
+        SceneOptions options;
+        options.maxRefractureDepth = 0;
+        Scene scene(options);
+        scene.step(60);
+        EXPECT_EQ(scene.world->fractureStatistics().fractureEvents, 1u);
+        const auto fragments = scene.fragments();
+        ASSERT_EQ(fragments.size(), 2u);
+        for (btFractureRigidBody* f : fragments) {
+            EXPECT_FALSE(f->isFracturable());
+            EXPECT_EQ(f->settings().refractureDepth, 1);
+        }
+    }
+    {  // Depth 2: the ball keeps pressing; pieces break again, but no generation beyond 3 exists.
+        SceneOptions options;
+        options.maxRefractureDepth = 2;
+        Scene scene(options);
+        scene.step(60);
+        const auto& s = scene.world->fractureStatistics();
+        EXPECT_GT(s.fractureEvents, 1u);
+        EXPECT_LE(s.fractureEvents, 1u + 2u + 4u);
+        for (btFractureRigidBody* f : scene.fragments()) {
+            EXPECT_LE(f->settings().refractureDepth, 3);
+            if (f->settings().refractureDepth > 2) {
+                EXPECT_FALSE(f->isFracturable());
+            }
+        }
+    }
+}
+
+TEST(FractureWorld, EngineErrorMakesBodyUnbreakable) {
+    struct Failing : FractureEngine {
+        FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>&, FractureStatistics&) override {
+            throw Error(body.name() + ": test engine refuses");
+        }
+    };
+    Scene scene;
+    scene.world->setFractureEngine(std::make_unique<Failing>());
+    std::vector<std::string> messages;
+    setLogSink([&](LogLevel, const std::string& m) { messages.push_back(m); });
+    scene.step(30);
+    setLogSink(nullptr);
+    const FractureStatistics& s = scene.world->fractureStatistics();
+    EXPECT_EQ(s.engineCalls, 1u);
+    EXPECT_EQ(s.engineFailures, 1u);
+    EXPECT_FALSE(scene.slab->isFracturable());
+    EXPECT_TRUE(scene.slab->isInWorld());
+    ASSERT_FALSE(messages.empty());
+    EXPECT_NE(messages.back().find("test engine refuses"), std::string::npos) << messages.back();
+}
+
+TEST(FractureWorld, RemovingAFragmentHandsItToTheCaller) {
+    Scene scene;
+    scene.step(10);
+    auto fragments = scene.fragments();
+    ASSERT_GE(fragments.size(), 2u);
+    EXPECT_TRUE(scene.world->ownsBody(fragments[0]));
+    scene.world->removeRigidBody(fragments[0]);
+    EXPECT_FALSE(scene.world->ownsBody(fragments[0]));
+    std::unique_ptr<btFractureRigidBody> mine(fragments[0]);  // the caller deletes it
+    EXPECT_EQ(scene.fragments().size(), fragments.size() - 1);
+    scene.step(10);
+}
