@@ -12,7 +12,10 @@
 #include <btFracture/dynamics/PrincipalAxes.h>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
+#include <BulletCollision/CollisionDispatch/btCollisionConfiguration.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
+#include <BulletCollision/CollisionDispatch/btConvexPlaneCollisionAlgorithm.h>
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
@@ -87,6 +90,50 @@ void validateSpec(const FragmentSpec& spec, const std::string& where) {
     }
 }
 
+// While alive, convex-convex and convex-plane pairs that get their collision algorithm (i.e. the
+// new fragments' pairs in the replayed step) use Bullet's perturbed multi-point contact
+// generation, so a fragment resting on something starts with a full contact manifold instead of
+// one point per step (which lets it sink and tip: popping). Other pairs keep their algorithms.
+class MultipointContactsForNewPairs {
+public:
+    explicit MultipointContactsForNewPairs(btCollisionConfiguration* configuration) {
+        if (!configuration) return;
+        convex_ = dynamic_cast<btConvexConvexAlgorithm::CreateFunc*>(
+            configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
+        plane_ = dynamic_cast<btConvexPlaneCollisionAlgorithm::CreateFunc*>(
+            configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, STATIC_PLANE_PROXYTYPE));
+        if (convex_) {
+            saved_[0] = convex_->m_numPerturbationIterations;
+            saved_[1] = convex_->m_minimumPointsPerturbationThreshold;
+            convex_->m_numPerturbationIterations = 3;
+            convex_->m_minimumPointsPerturbationThreshold = 3;
+        }
+        if (plane_) {
+            saved_[2] = plane_->m_numPerturbationIterations;
+            saved_[3] = plane_->m_minimumPointsPerturbationThreshold;
+            plane_->m_numPerturbationIterations = 3;
+            plane_->m_minimumPointsPerturbationThreshold = 3;
+        }
+    }
+    ~MultipointContactsForNewPairs() {
+        if (convex_) {
+            convex_->m_numPerturbationIterations = saved_[0];
+            convex_->m_minimumPointsPerturbationThreshold = saved_[1];
+        }
+        if (plane_) {
+            plane_->m_numPerturbationIterations = saved_[2];
+            plane_->m_minimumPointsPerturbationThreshold = saved_[3];
+        }
+    }
+    MultipointContactsForNewPairs(const MultipointContactsForNewPairs&) = delete;
+    MultipointContactsForNewPairs& operator=(const MultipointContactsForNewPairs&) = delete;
+
+private:
+    btConvexConvexAlgorithm::CreateFunc* convex_ = nullptr;
+    btConvexPlaneCollisionAlgorithm::CreateFunc* plane_ = nullptr;
+    int saved_[4] = {0, 0, 0, 0};
+};
+
 }  // namespace
 
 struct btFractureDynamicsWorld::Event {
@@ -100,7 +147,8 @@ btFractureDynamicsWorld::btFractureDynamicsWorld(btDispatcher* dispatcher, btBro
                                                  btConstraintSolver* constraintSolver,
                                                  btCollisionConfiguration* collisionConfiguration)
     : btDiscreteDynamicsWorld(dispatcher, pairCache, constraintSolver, collisionConfiguration),
-      defaultMaterial_(Material::steel()) {
+      defaultMaterial_(Material::steel()),
+      collisionConfiguration_(collisionConfiguration) {
     if (auto* collisionDispatcher = dynamic_cast<btCollisionDispatcher*>(dispatcher))
         btGImpactCollisionAlgorithm::registerAlgorithm(collisionDispatcher);
 }
@@ -382,7 +430,10 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
     retired.clear();
 
     replaying_ = true;
-    btDiscreteDynamicsWorld::internalSingleStepSimulation(timeStep);
+    {
+        const MultipointContactsForNewPairs multipoint(collisionConfiguration_);
+        btDiscreteDynamicsWorld::internalSingleStepSimulation(timeStep);
+    }
     replaying_ = false;
     ++stats_.replayedSteps;
 }

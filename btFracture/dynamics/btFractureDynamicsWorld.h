@@ -20,7 +20,10 @@
 //  5. If any body broke: restore the snapshot, remove the parents (Bullet drops their contact
 //     manifolds with their broadphase pairs), add the fragments with the parent's pre-step rigid
 //     motion (v + w x r, same w), push overlapping fragments apart (FragmentSeparation.h),
-//     tell the listeners, and replay the step with fracture suppressed.
+//     tell the listeners, and replay the step with fracture suppressed. Pairs created in the
+//     replay (the fragments') use Bullet's multi-point convex contacts (3 perturbation
+//     iterations) so that a resting fragment starts with a full manifold instead of sinking and
+//     tipping on a single point; existing pairs are not affected.
 // With fracture disabled, no engine, or no btFractureRigidBody added, a step is Bullet's step.
 //
 // Internal tick callbacks: on a step that fractures, Bullet's pre/post tick callbacks run for the
@@ -98,6 +101,7 @@ private:
     bool replaying_ = false;
     bool missingEngineLogged_ = false;
     Material defaultMaterial_;
+    btCollisionConfiguration* collisionConfiguration_;
     std::vector<FractureListener*> listeners_;
     FractureStatistics stats_;
     std::uint64_t stepStamp_ = 0;

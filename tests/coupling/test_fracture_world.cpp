@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -277,9 +278,11 @@ TEST(FractureWorld, SplittingARestingSlabDoesNotPop) {
         scene.step();
         peak = std::max(peak, probe(*scene.world).kinetic);
     }
-    // The slab weighs 20 kg: 1e-4 J is a speed of 3 mm/s.
-    EXPECT_LE(after.kinetic, 1.01 * before.kinetic + 1e-4) << before.kinetic << " -> " << after.kinetic;
-    EXPECT_LT(peak, 1e-4);
+    // Fresh contacts solved without warm starting leave a residue: 5e-4 J is the 20 kg slab at
+    // 7 mm/s, or its weight lifted by 2.5 um. A pop (halves overlapping by a collision margin,
+    // ~3 mm, pushed apart in one step) would be of order 0.1 J.
+    EXPECT_LE(after.kinetic, 1.01 * before.kinetic + 5e-4) << before.kinetic << " -> " << after.kinetic;
+    EXPECT_LT(peak, 5e-4);
     std::printf("resting split: kinetic energy %.2e J before, %.2e J after the replayed step, peak %.2e J over 0.5 s\n",
                 before.kinetic, after.kinetic, peak);
     for (btFractureRigidBody* f : scene.fragments())
@@ -300,14 +303,24 @@ TEST(FractureWorld, RefractureStopsAtMaxDepth) {
             EXPECT_EQ(f->settings().refractureDepth, 1);
         }
     }
-    {  // Depth 2: the ball keeps pressing; pieces break again, but no generation beyond 3 exists.
+    {  // Depth 2 and a low threshold: pieces break again under the ball, but no generation beyond
+       // 3 exists.
         SceneOptions options;
         options.maxRefractureDepth = 2;
+        options.impulseThreshold = 1.5;
         Scene scene(options);
+        struct Depths : FractureListener {
+            std::vector<int> parents;
+            void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>&,
+                                 const FractureEventInfo&) override {
+                parents.push_back(parent.settings().refractureDepth);
+            }
+        } depths;
+        scene.world->addFractureListener(&depths);
         scene.step(60);
-        const auto& s = scene.world->fractureStatistics();
-        EXPECT_GT(s.fractureEvents, 1u);
-        EXPECT_LE(s.fractureEvents, 1u + 2u + 4u);
+        ASSERT_GT(depths.parents.size(), 1u);
+        EXPECT_GE(*std::max_element(depths.parents.begin(), depths.parents.end()), 1);  // fragments broke
+        for (int depth : depths.parents) EXPECT_LE(depth, 2);
         for (btFractureRigidBody* f : scene.fragments()) {
             EXPECT_LE(f->settings().refractureDepth, 3);
             if (f->settings().refractureDepth > 2) {
