@@ -2,6 +2,7 @@
 
 #include <btFracture/core/Error.h>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <sstream>
@@ -21,7 +22,8 @@ MassProperties computeMassProperties(const TriangleMesh& mesh) {
         volume += det / 6.0;
         firstMoment += det / 24.0 * s;
         // Tetrahedron with a vertex at the origin: V/20 (a a^T + b b^T + c c^T + s s^T).
-        secondMoment += det / 120.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+        secondMoment +=
+            det / 120.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
     }
     if (!(volume > 0.0)) {
         std::ostringstream msg;
@@ -35,6 +37,26 @@ MassProperties computeMassProperties(const TriangleMesh& mesh) {
     const Eigen::Matrix3d central = secondMoment - volume * p.centreOfMass * p.centreOfMass.transpose();
     p.inertiaPerDensity = central.trace() * Eigen::Matrix3d::Identity() - central;
     return p;
+}
+
+PrincipalAxes principalAxes(const Eigen::Matrix3d& inertia) {
+    if (!inertia.allFinite()) {
+        std::ostringstream msg;
+        msg << "principal axes of a non-finite inertia tensor: "
+            << inertia.format(Eigen::IOFormat(6, 0, ", ", "; ", "", "", "[", "]"));
+        throw Error(msg.str());
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(0.5 * (inertia + inertia.transpose()));
+    PrincipalAxes axes;
+    axes.moments = eigen.eigenvalues();
+    axes.rotation = eigen.eigenvectors();
+    for (int k = 0; k < 2; ++k) {
+        Eigen::Index largest;
+        axes.rotation.col(k).cwiseAbs().maxCoeff(&largest);
+        if (axes.rotation(largest, k) < 0.0) axes.rotation.col(k) = -axes.rotation.col(k);
+    }
+    axes.rotation.col(2) = axes.rotation.col(0).cross(axes.rotation.col(1));
+    return axes;
 }
 
 }  // namespace btfracture

@@ -8,7 +8,7 @@
 namespace btfracture {
 
 struct MassProperties {
-    double volume = 0.0;                                   // [m^3]
+    double volume = 0.0;                                     // [m^3]
     Eigen::Vector3d centreOfMass = Eigen::Vector3d::Zero();  // [m], mesh frame
     // Inertia tensor about the centre of mass for density 1 [m^5]; multiply by density [kg/m^3].
     Eigen::Matrix3d inertiaPerDensity = Eigen::Matrix3d::Zero();
@@ -16,5 +16,15 @@ struct MassProperties {
 
 // Throws btfracture::Error naming mesh.name if the enclosed volume is not positive.
 MassProperties computeMassProperties(const TriangleMesh& mesh);
+
+// Principal frame of a symmetric inertia tensor: inertia = rotation * diag(moments) * rotation^T
+// with moments ascending and rotation proper (det +1). Deterministic signs: the largest-magnitude
+// component of each of the first two columns is positive, the third is their cross product.
+// Throws btfracture::Error when the tensor is not finite.
+struct PrincipalAxes {
+    Eigen::Vector3d moments = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+};
+PrincipalAxes principalAxes(const Eigen::Matrix3d& inertia);
 
 }  // namespace btfracture

@@ -38,7 +38,9 @@ bool MeshDefects::isClosedManifold() const {
            nonManifoldEdges == 0 && nonManifoldVertices == 0 && inconsistentEdges == 0;
 }
 
-bool MeshDefects::isClosedSolid() const { return isClosedManifold() && intersectingPairs == 0; }
+bool MeshDefects::isClosedSolid() const {
+    return isClosedManifold() && intersectingPairs == 0;
+}
 
 std::string MeshDefects::describe() const {
     std::ostringstream out;
@@ -49,7 +51,8 @@ std::string MeshDefects::describe() const {
     appendCount(out, nonManifoldEdges, "non-manifold edge", "non-manifold edges");
     appendCount(out, nonManifoldVertices, "non-manifold vertex", "non-manifold vertices");
     appendCount(out, inconsistentEdges, "inconsistently oriented edge", "inconsistently oriented edges");
-    appendCount(out, intersectingPairs, "self-intersecting triangle pair", "self-intersecting triangle pairs");
+    appendCount(out, intersectingPairs, "self-intersecting triangle pair",
+                "self-intersecting triangle pairs");
     return out.str();
 }
 
@@ -81,7 +84,8 @@ MeshDefects inspectMesh(const TriangleMesh& mesh) {
         const Eigen::Vector3d& c = mesh.vertices[tri[2]];
         if (!a.allFinite() || !b.allFinite() || !c.allFinite()) continue;  // counted as non-finite vertices
         const double area2 = (b - a).cross(c - a).norm();
-        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] || !(area2 > 2e-12 * diag2)) ++d.degenerateTriangles;
+        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] || !(area2 > 2e-12 * diag2))
+            ++d.degenerateTriangles;
         d.signedVolume += a.dot(b.cross(c)) / 6.0;
     }
 
@@ -89,8 +93,10 @@ MeshDefects inspectMesh(const TriangleMesh& mesh) {
     struct EdgeUse {
         long long key;  // min * nv + max
         int triangle;
-        bool forward;   // traversed from the smaller to the larger index
-        bool operator<(const EdgeUse& o) const { return key < o.key || (key == o.key && triangle < o.triangle); }
+        bool forward;  // traversed from the smaller to the larger index
+        bool operator<(const EdgeUse& o) const {
+            return key < o.key || (key == o.key && triangle < o.triangle);
+        }
     };
     std::vector<EdgeUse> uses;
     uses.reserve(3 * valid.size());
@@ -139,8 +145,10 @@ MeshDefects inspectMesh(const TriangleMesh& mesh) {
                 if (w == v) continue;
                 auto it = std::find_if(firstByOther.begin(), firstByOther.end(),
                                        [w](const std::pair<int, int>& p) { return p.first == w; });
-                if (it == firstByOther.end()) firstByOther.emplace_back(w, i);
-                else local.unite(i, it->second);
+                if (it == firstByOther.end())
+                    firstByOther.emplace_back(w, i);
+                else
+                    local.unite(i, it->second);
             }
         int roots = 0;
         for (int i = 0; i < size; ++i)
@@ -156,7 +164,8 @@ void requireClosedSolid(TriangleMesh& mesh) {
     if (mesh.triangles.empty()) throw Error(source + ": mesh has no triangles");
     const MeshDefects d = inspectMesh(mesh);
     if (!d.isClosedSolid())
-        throw Error(source + ": not a closed, consistently oriented, non-self-intersecting manifold triangle mesh: " +
+        throw Error(source +
+                    ": not a closed, consistently oriented, non-self-intersecting manifold triangle mesh: " +
                     d.describe());
     if (d.signedVolume < 0.0) {
         for (auto& tri : mesh.triangles) std::swap(tri[1], tri[2]);

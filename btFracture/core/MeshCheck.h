@@ -7,16 +7,16 @@
 namespace btfracture {
 
 struct MeshDefects {
-    int invalidIndices = 0;        // triangle corners outside [0, vertex count)
-    int nonFiniteVertices = 0;     // NaN or Inf coordinates
-    int degenerateTriangles = 0;   // repeated corner or area below 1e-12 of the squared bbox diagonal
-    int boundaryEdges = 0;         // edges used by one triangle (holes)
-    int nonManifoldEdges = 0;      // edges used by more than two triangles
-    int nonManifoldVertices = 0;   // vertices whose triangles form more than one fan
-    int inconsistentEdges = 0;     // edges whose two triangles traverse it in the same direction
-    int intersectingPairs = 0;     // pairs of triangles meeting beyond a shared vertex or edge
-    int components = 0;            // edge-connected triangle components
-    double signedVolume = 0.0;     // > 0 for outward-facing normals
+    int invalidIndices = 0;       // triangle corners outside [0, vertex count)
+    int nonFiniteVertices = 0;    // NaN or Inf coordinates
+    int degenerateTriangles = 0;  // repeated corner or area below 1e-12 of the squared bbox diagonal
+    int boundaryEdges = 0;        // edges used by one triangle (holes)
+    int nonManifoldEdges = 0;     // edges used by more than two triangles
+    int nonManifoldVertices = 0;  // vertices whose triangles form more than one fan
+    int inconsistentEdges = 0;    // edges whose two triangles traverse it in the same direction
+    int intersectingPairs = 0;    // pairs of triangles meeting beyond a shared vertex or edge
+    int components = 0;           // edge-connected triangle components
+    double signedVolume = 0.0;    // > 0 for outward-facing normals
 
     // True if the mesh is a closed, consistently oriented 2-manifold (may still self-intersect
     // or be inside-out).

@@ -31,13 +31,18 @@ Triangle makeTriangle(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 Vec2 project(const Vec3& p, int dropAxis) {
     switch (dropAxis) {
-        case 0: return {p.y(), p.z()};
-        case 1: return {p.z(), p.x()};
-        default: return {p.x(), p.y()};
+        case 0:
+            return {p.y(), p.z()};
+        case 1:
+            return {p.z(), p.x()};
+        default:
+            return {p.x(), p.y()};
     }
 }
 
-double snap(double value, double tolerance) { return std::abs(value) <= tolerance ? 0.0 : value; }
+double snap(double value, double tolerance) {
+    return std::abs(value) <= tolerance ? 0.0 : value;
+}
 
 double orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
     const Vec2 u = b - a, v = c - a;
@@ -83,10 +88,12 @@ bool coplanarTrianglesIntersect(const Triangle& s, const Triangle& t, double len
 // Closed segment pq against closed triangle t.
 bool segmentTriangleIntersect(const Vec3& p, const Vec3& q, const Triangle& t, double length) {
     const double tolerance = kRelativeTolerance * t.normal.norm() * length;
-    const double dp = snap(t.normal.dot(p - t.p[0]), tolerance), dq = snap(t.normal.dot(q - t.p[0]), tolerance);
+    const double dp = snap(t.normal.dot(p - t.p[0]), tolerance),
+                 dq = snap(t.normal.dot(q - t.p[0]), tolerance);
     if (dp * dq > 0.0) return false;
     const double area = kRelativeTolerance * length * length;
-    const Vec2 a = project(t.p[0], t.dropAxis), b = project(t.p[1], t.dropAxis), c = project(t.p[2], t.dropAxis);
+    const Vec2 a = project(t.p[0], t.dropAxis), b = project(t.p[1], t.dropAxis),
+               c = project(t.p[2], t.dropAxis);
     if (dp == 0.0 && dq == 0.0) {
         const Vec2 p2 = project(p, t.dropAxis), q2 = project(q, t.dropAxis);
         return segmentsIntersect2d(p2, q2, a, b, area) || segmentsIntersect2d(p2, q2, b, c, area) ||
@@ -98,7 +105,8 @@ bool segmentTriangleIntersect(const Vec3& p, const Vec3& q, const Triangle& t, d
 
 // Range [lo, hi] of direction . x over the part of `t` on the other triangle's plane, given the
 // snapped signed distances of t's corners to that plane (not all of one strict sign, not all 0).
-std::pair<double, double> planeCrossing(const Triangle& t, const std::array<double, 3>& d, const Vec3& direction) {
+std::pair<double, double> planeCrossing(const Triangle& t, const std::array<double, 3>& d,
+                                        const Vec3& direction) {
     double lo = INFINITY, hi = -INFINITY;
     auto add = [&](const Vec3& x) {
         const double s = direction.dot(x);
@@ -130,7 +138,8 @@ bool disjointTrianglesIntersect(const Triangle& s, const Triangle& t) {
     };
     if (oneSide(ds) || oneSide(dt)) return false;
     const Vec3 direction = s.normal.cross(t.normal);
-    const bool allZero = (dt[0] == 0.0 && dt[1] == 0.0 && dt[2] == 0.0) || (ds[0] == 0.0 && ds[1] == 0.0 && ds[2] == 0.0);
+    const bool allZero =
+        (dt[0] == 0.0 && dt[1] == 0.0 && dt[2] == 0.0) || (ds[0] == 0.0 && ds[1] == 0.0 && ds[2] == 0.0);
     if (allZero || direction.norm() <= kRelativeTolerance * s.normal.norm() * t.normal.norm())
         return coplanarTrianglesIntersect(s, t, length);
     const auto [loS, hiS] = planeCrossing(s, ds, direction);
@@ -140,8 +149,8 @@ bool disjointTrianglesIntersect(const Triangle& s, const Triangle& t) {
 }
 
 // Pair of mesh triangles, classified by how many vertex indices they share.
-bool meshTrianglesIntersect(const TriangleMesh& mesh, const std::array<int, 3>& ia, const std::array<int, 3>& ib,
-                            const Triangle& s, const Triangle& t) {
+bool meshTrianglesIntersect(const TriangleMesh& mesh, const std::array<int, 3>& ia,
+                            const std::array<int, 3>& ib, const Triangle& s, const Triangle& t) {
     int shared = 0, sharedA[3], sharedB[3];
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
@@ -152,7 +161,8 @@ bool meshTrianglesIntersect(const TriangleMesh& mesh, const std::array<int, 3>& 
             }
     const double length = std::max(s.size, t.size);
     switch (shared) {
-        case 0: return disjointTrianglesIntersect(s, t);
+        case 0:
+            return disjointTrianglesIntersect(s, t);
         case 1: {
             // The intersection is convex and contains the shared vertex; it holds more than that
             // vertex exactly when one triangle's opposite edge meets the other triangle.
@@ -170,7 +180,8 @@ bool meshTrianglesIntersect(const TriangleMesh& mesh, const std::array<int, 3>& 
             const double offPlane = snap(nS.dot(apexT - u), kRelativeTolerance * nS.norm() * length);
             return offPlane == 0.0 && nS.dot(nT) > 0.0;
         }
-        default: return true;  // the same three vertices twice
+        default:
+            return true;  // the same three vertices twice
     }
 }
 
@@ -210,10 +221,11 @@ private:
         int axis;
         centres.sizes().maxCoeff(&axis);
         const int middle = first + count / 2;
-        std::nth_element(ids_.begin() + first, ids_.begin() + middle, ids_.begin() + first + count, [&](int a, int b) {
-            const double ca = boxes_[a].center()[axis], cb = boxes_[b].center()[axis];
-            return ca < cb || (ca == cb && a < b);
-        });
+        std::nth_element(ids_.begin() + first, ids_.begin() + middle, ids_.begin() + first + count,
+                         [&](int a, int b) {
+                             const double ca = boxes_[a].center()[axis], cb = boxes_[b].center()[axis];
+                             return ca < cb || (ca == cb && a < b);
+                         });
         const int left = build(first, middle - first);
         const int right = build(middle, first + count - middle);
         nodes_[index].left = left;
@@ -226,7 +238,8 @@ private:
         const Node& node = nodes_[n];
         if (node.leaf()) {
             for (int i = node.first; i < node.first + node.count; ++i)
-                for (int j = i + 1; j < node.first + node.count; ++j) visitIfOverlapping(ids_[i], ids_[j], visit);
+                for (int j = i + 1; j < node.first + node.count; ++j)
+                    visitIfOverlapping(ids_[i], ids_[j], visit);
             return;
         }
         self(node.left, visit);
@@ -241,7 +254,8 @@ private:
         if (!na.box.intersects(nb.box)) return;
         if (na.leaf() && nb.leaf()) {
             for (int i = na.first; i < na.first + na.count; ++i)
-                for (int j = nb.first; j < nb.first + nb.count; ++j) visitIfOverlapping(ids_[i], ids_[j], visit);
+                for (int j = nb.first; j < nb.first + nb.count; ++j)
+                    visitIfOverlapping(ids_[i], ids_[j], visit);
         } else if (na.leaf() || (!nb.leaf() && nb.count > na.count)) {
             cross(a, nb.left, visit);
             cross(a, nb.right, visit);

@@ -14,7 +14,8 @@ namespace btfracture {
 TriangleMesh readMesh(const std::string& path) {
     const size_t dot = path.find_last_of('.');
     const size_t slash = path.find_last_of('/');
-    std::string extension = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : path.substr(dot);
+    std::string extension =
+        dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : path.substr(dot);
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     TriangleMesh mesh;
@@ -27,7 +28,8 @@ TriangleMesh readMesh(const std::string& path) {
                     "' (expected .obj or .ply)");
     }
     requireClosedSolid(mesh);
-    logf(LogLevel::Debug, path, ": ", mesh.vertices.size(), " vertices, ", mesh.triangles.size(), " triangles");
+    logf(LogLevel::Debug, path, ": ", mesh.vertices.size(), " vertices, ", mesh.triangles.size(),
+         " triangles");
     return mesh;
 }
 

@@ -17,7 +17,9 @@ namespace {
     throw Error(msg.str());
 }
 
-std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+std::string quoted(std::string_view text) {
+    return "'" + std::string(text) + "'";
+}
 
 // Index part of an optional "/texture/normal" suffix must be empty or an integer.
 bool validSuffix(std::string_view rest) {
@@ -53,12 +55,14 @@ TriangleMesh parseObj(const std::string& text, const std::string& source) {
         const int number = lines.lineNumber();
         if (keyword == "v") {
             Eigen::Vector3d p;
-            if (tokens.size() < 4) fail(source, number, "expected 3 vertex coordinates after 'v', got " + quoted(line));
+            if (tokens.size() < 4)
+                fail(source, number, "expected 3 vertex coordinates after 'v', got " + quoted(line));
             for (size_t k = 1; k < tokens.size(); ++k) {
                 double value;
                 if (!parseDouble(tokens[k], value))
-                    fail(source, number, "expected a number for vertex coordinate " + std::to_string(k) + ", got " +
-                                             quoted(tokens[k]));
+                    fail(source, number,
+                         "expected a number for vertex coordinate " + std::to_string(k) + ", got " +
+                             quoted(tokens[k]));
                 if (k <= 3) p[k - 1] = value;
             }
             mesh.vertices.push_back(p);
@@ -73,27 +77,33 @@ TriangleMesh parseObj(const std::string& text, const std::string& source) {
                 long long index;
                 if (!parseInteger(token.substr(0, slash), index) ||
                     (slash != std::string_view::npos && !validSuffix(token.substr(slash + 1))))
-                    fail(source, number, "expected a face corner of the form i, i/t, i/t/n or i//n, got " + quoted(token));
+                    fail(source, number,
+                         "expected a face corner of the form i, i/t, i/t/n or i//n, got " + quoted(token));
                 const long long resolved = index < 0 ? count + index : index - 1;
                 if (index == 0 || resolved < 0 || resolved >= count)
-                    fail(source, number, "vertex index " + std::to_string(index) + " out of range (" +
-                                             std::to_string(count) + " vertices defined so far)");
+                    fail(source, number,
+                         "vertex index " + std::to_string(index) + " out of range (" + std::to_string(count) +
+                             " vertices defined so far)");
                 corners.push_back(static_cast<int>(resolved));
             }
             fan.add(corners);
         } else if (keyword == "l" || keyword == "p") {
             ++skippedElements;
-        } else if (!(keyword == "vt" || keyword == "vn" || keyword == "vp" || keyword == "g" || keyword == "o" ||
-                     keyword == "s" || keyword == "usemtl" || keyword == "mtllib")) {
-            fail(source, number, "unknown OBJ record " + quoted(keyword) + " (expected v, f, vt, vn, g, o, s, usemtl, ...)");
+        } else if (!(keyword == "vt" || keyword == "vn" || keyword == "vp" || keyword == "g" ||
+                     keyword == "o" || keyword == "s" || keyword == "usemtl" || keyword == "mtllib")) {
+            fail(source, number,
+                 "unknown OBJ record " + quoted(keyword) + " (expected v, f, vt, vn, g, o, s, usemtl, ...)");
         }
     }
     fan.report(source);
     if (skippedElements > 0)
-        logf(LogLevel::Info, source, ": skipped ", skippedElements, " line/point elements (l, p); only faces are read");
+        logf(LogLevel::Info, source, ": skipped ", skippedElements,
+             " line/point elements (l, p); only faces are read");
     return mesh;
 }
 
-TriangleMesh readObj(const std::string& path) { return parseObj(readWholeFile(path, "mesh file"), path); }
+TriangleMesh readObj(const std::string& path) {
+    return parseObj(readWholeFile(path, "mesh file"), path);
+}
 
 }  // namespace btfracture

@@ -12,7 +12,9 @@
 namespace btfracture {
 
 ObjWriter::ObjWriter(std::string path, int significantDigits)
-    : path_(std::move(path)), out_(path_, std::ios::binary | std::ios::trunc), significantDigits_(significantDigits) {
+    : path_(std::move(path)),
+      out_(path_, std::ios::binary | std::ios::trunc),
+      significantDigits_(significantDigits) {
     if (!out_) throw Error("cannot create OBJ file '" + path_ + "': " + std::strerror(errno));
     if (significantDigits < 1 || significantDigits > 17)
         throw Error("OBJ file '" + path_ + "': significant digits must be in [1, 17], got " +
@@ -29,15 +31,17 @@ ObjWriter::~ObjWriter() {
 
 void ObjWriter::writeNumber(double value) {
     char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::general,
-                                      significantDigits_);
+    const auto result =
+        std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::general, significantDigits_);
     out_.write(buffer, result.ptr - buffer);
 }
 
 void ObjWriter::addObject(const std::string& name, const TriangleMesh& mesh) {
     if (closed_) throw Error("OBJ file '" + path_ + "': addObject after close");
-    if (name.empty() || std::any_of(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }))
-        throw Error("OBJ file '" + path_ + "': object name '" + name + "' must be non-empty without whitespace");
+    if (name.empty() ||
+        std::any_of(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }))
+        throw Error("OBJ file '" + path_ + "': object name '" + name +
+                    "' must be non-empty without whitespace");
     out_ << "o " << name << '\n';
     for (const auto& v : mesh.vertices) {
         out_ << "v ";
@@ -64,7 +68,8 @@ void ObjWriter::close() {
 void writeObj(const std::string& path, const TriangleMesh& mesh, int significantDigits) {
     std::string name = mesh.name.substr(mesh.name.find_last_of('/') + 1);
     name = name.substr(0, name.find_last_of('.'));
-    std::replace_if(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }, '_');
+    std::replace_if(
+        name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }, '_');
     ObjWriter writer(path, significantDigits);
     writer.addObject(name.empty() ? "mesh" : name, mesh);
     writer.close();

@@ -31,10 +31,12 @@ struct Element {
 
 bool parseType(std::string_view name, Type& type) {
     static const std::pair<const char*, Type> names[] = {
-        {"char", Type::Int8},     {"int8", Type::Int8},     {"uchar", Type::UInt8},    {"uint8", Type::UInt8},
-        {"short", Type::Int16},   {"int16", Type::Int16},   {"ushort", Type::UInt16},  {"uint16", Type::UInt16},
-        {"int", Type::Int32},     {"int32", Type::Int32},   {"uint", Type::UInt32},    {"uint32", Type::UInt32},
-        {"float", Type::Float32}, {"float32", Type::Float32}, {"double", Type::Float64}, {"float64", Type::Float64}};
+        {"char", Type::Int8},      {"int8", Type::Int8},       {"uchar", Type::UInt8},
+        {"uint8", Type::UInt8},    {"short", Type::Int16},     {"int16", Type::Int16},
+        {"ushort", Type::UInt16},  {"uint16", Type::UInt16},   {"int", Type::Int32},
+        {"int32", Type::Int32},    {"uint", Type::UInt32},     {"uint32", Type::UInt32},
+        {"float", Type::Float32},  {"float32", Type::Float32}, {"double", Type::Float64},
+        {"float64", Type::Float64}};
     for (const auto& [text, value] : names)
         if (name == text) {
             type = value;
@@ -43,18 +45,24 @@ bool parseType(std::string_view name, Type& type) {
     return false;
 }
 
-bool isInteger(Type type) { return type != Type::Float32 && type != Type::Float64; }
+bool isInteger(Type type) {
+    return type != Type::Float32 && type != Type::Float64;
+}
 
 int sizeOf(Type type) {
     switch (type) {
         case Type::Int8:
-        case Type::UInt8: return 1;
+        case Type::UInt8:
+            return 1;
         case Type::Int16:
-        case Type::UInt16: return 2;
+        case Type::UInt16:
+            return 2;
         case Type::Int32:
         case Type::UInt32:
-        case Type::Float32: return 4;
-        case Type::Float64: return 8;
+        case Type::Float32:
+            return 4;
+        case Type::Float64:
+            return 8;
     }
     return 0;
 }
@@ -85,11 +93,16 @@ Header parseHeader(const std::string& bytes, const std::string& source) {
         if (keyword == "end_header") break;
         if (keyword == "format") {
             if (tokens.size() != 3 || tokens[2] != "1.0")
-                fail("expected 'format ascii|binary_little_endian|binary_big_endian 1.0', got '" + std::string(line) + "'");
-            if (tokens[1] == "ascii") header.format = Format::Ascii;
-            else if (tokens[1] == "binary_little_endian") header.format = Format::BinaryLittleEndian;
-            else if (tokens[1] == "binary_big_endian") header.format = Format::BinaryBigEndian;
-            else fail("unknown PLY format '" + std::string(tokens[1]) + "'");
+                fail("expected 'format ascii|binary_little_endian|binary_big_endian 1.0', got '" +
+                     std::string(line) + "'");
+            if (tokens[1] == "ascii")
+                header.format = Format::Ascii;
+            else if (tokens[1] == "binary_little_endian")
+                header.format = Format::BinaryLittleEndian;
+            else if (tokens[1] == "binary_big_endian")
+                header.format = Format::BinaryBigEndian;
+            else
+                fail("unknown PLY format '" + std::string(tokens[1]) + "'");
             haveFormat = true;
         } else if (keyword == "element") {
             long long count;
@@ -103,15 +116,19 @@ Header parseHeader(const std::string& bytes, const std::string& source) {
                 Type countType, itemType;
                 if (!parseType(tokens[2], countType) || !parseType(tokens[3], itemType))
                     fail("unknown type in '" + std::string(line) + "'");
-                if (!isInteger(countType)) fail("list count type must be an integer type, got '" + std::string(tokens[2]) + "'");
+                if (!isInteger(countType))
+                    fail("list count type must be an integer type, got '" + std::string(tokens[2]) + "'");
                 p = {std::string(tokens[4]), itemType, true, countType};
             } else if (tokens.size() == 3) {
                 Type type;
-                if (!parseType(tokens[1], type)) fail("unknown property type '" + std::string(tokens[1]) + "'");
+                if (!parseType(tokens[1], type))
+                    fail("unknown property type '" + std::string(tokens[1]) + "'");
                 p = {std::string(tokens[2]), type, false, Type::UInt8};
             } else {
-                fail("expected 'property <type> <name>' or 'property list <count type> <item type> <name>', got '" +
-                     std::string(line) + "'");
+                fail(
+                    "expected 'property <type> <name>' or 'property list <count type> <item type> <name>', "
+                    "got '" +
+                    std::string(line) + "'");
             }
             header.elements.back().properties.push_back(p);
         } else {
@@ -128,8 +145,12 @@ Header parseHeader(const std::string& bytes, const std::string& source) {
 class ValueSource {
 public:
     ValueSource(const std::string& bytes, const Header& header, const std::string& source)
-        : bytes_(bytes), format_(header.format), position_(header.dataOffset), source_(source),
-          lines_(std::string_view(bytes).substr(header.dataOffset)), firstLine_(header.dataLine) {}
+        : bytes_(bytes),
+          format_(header.format),
+          position_(header.dataOffset),
+          source_(source),
+          lines_(std::string_view(bytes).substr(header.dataOffset)),
+          firstLine_(header.dataLine) {}
 
     // Starts instance `index` of `element` (for ascii: its own line).
     void begin(const Element& element, long long index) {
@@ -138,8 +159,9 @@ public:
         if (format_ != Format::Ascii) return;
         std::string_view line;
         do {
-            if (!lines_.next(line)) fail("file ends early; expected " + std::to_string(element.count) + " " + element.name +
-                                         " lines");
+            if (!lines_.next(line))
+                fail("file ends early; expected " + std::to_string(element.count) + " " + element.name +
+                     " lines");
             splitTokens(line, tokens_);
         } while (tokens_.empty());
         next_ = 0;
@@ -147,7 +169,8 @@ public:
     // Ascii only: every token of the line was used.
     void end() {
         if (format_ == Format::Ascii && next_ != tokens_.size())
-            fail("expected " + std::to_string(next_) + " values on this line, got " + std::to_string(tokens_.size()));
+            fail("expected " + std::to_string(next_) + " values on this line, got " +
+                 std::to_string(tokens_.size()));
     }
 
     double number(Type type, const std::string& property) {
@@ -157,8 +180,8 @@ public:
             double value;
             long long integer;
             if (isInteger(type) ? !parseInteger(token, integer) : !parseDouble(token, value))
-                fail("expected " + std::string(isInteger(type) ? "an integer" : "a number") + " for property '" +
-                     property + "', got '" + std::string(token) + "'");
+                fail("expected " + std::string(isInteger(type) ? "an integer" : "a number") +
+                     " for property '" + property + "', got '" + std::string(token) + "'");
             return isInteger(type) ? static_cast<double>(integer) : value;
         }
         const int size = sizeOf(type);
@@ -166,16 +189,25 @@ public:
         unsigned char raw[8];
         std::memcpy(raw, bytes_.data() + position_, size);
         position_ += size;
-        if (format_ == Format::BinaryBigEndian) std::reverse(raw, raw + size);  // this machine is little endian
+        if (format_ == Format::BinaryBigEndian)
+            std::reverse(raw, raw + size);  // this machine is little endian
         switch (type) {
-            case Type::Int8: return static_cast<int8_t>(raw[0]);
-            case Type::UInt8: return raw[0];
-            case Type::Int16: return load<int16_t>(raw);
-            case Type::UInt16: return load<uint16_t>(raw);
-            case Type::Int32: return load<int32_t>(raw);
-            case Type::UInt32: return load<uint32_t>(raw);
-            case Type::Float32: return load<float>(raw);
-            case Type::Float64: return load<double>(raw);
+            case Type::Int8:
+                return static_cast<int8_t>(raw[0]);
+            case Type::UInt8:
+                return raw[0];
+            case Type::Int16:
+                return load<int16_t>(raw);
+            case Type::UInt16:
+                return load<uint16_t>(raw);
+            case Type::Int32:
+                return load<int32_t>(raw);
+            case Type::UInt32:
+                return load<uint32_t>(raw);
+            case Type::Float32:
+                return load<float>(raw);
+            case Type::Float64:
+                return load<double>(raw);
         }
         return 0.0;
     }
@@ -224,7 +256,8 @@ TriangleMesh parsePly(const std::string& bytes, const std::string& source) {
         if (element.name == "vertex") vertexElement = &element;
         if (element.name == "face") faceElement = &element;
     }
-    if (!vertexElement || !faceElement) throw Error(source + ": expected a 'vertex' and a 'face' element in the header");
+    if (!vertexElement || !faceElement)
+        throw Error(source + ": expected a 'vertex' and a 'face' element in the header");
     int xyz[3];
     for (int k = 0; k < 3; ++k) {
         const std::string name(1, "xyz"[k]);
@@ -261,13 +294,14 @@ TriangleMesh parsePly(const std::string& bytes, const std::string& source) {
                 if (count < 0) values.fail("negative list length " + std::to_string(count));
                 const bool isCorners = &element == faceElement && static_cast<int>(k) == indicesProperty;
                 if (isCorners && count < 3)
-                    values.fail("expected at least 3 vertex indices, got " + std::to_string(static_cast<long long>(count)));
+                    values.fail("expected at least 3 vertex indices, got " +
+                                std::to_string(static_cast<long long>(count)));
                 for (long long item = 0; item < static_cast<long long>(count); ++item) {
                     const double index = values.number(property.type, property.name);
                     if (!isCorners) continue;
                     if (index < 0 || index >= static_cast<double>(vertexElement->count))
-                        values.fail("vertex index " + std::to_string(static_cast<long long>(index)) + " out of range (" +
-                                    std::to_string(vertexElement->count) + " vertices)");
+                        values.fail("vertex index " + std::to_string(static_cast<long long>(index)) +
+                                    " out of range (" + std::to_string(vertexElement->count) + " vertices)");
                     corners.push_back(static_cast<int>(index));
                 }
             }
@@ -280,6 +314,8 @@ TriangleMesh parsePly(const std::string& bytes, const std::string& source) {
     return mesh;
 }
 
-TriangleMesh readPly(const std::string& path) { return parsePly(readWholeFile(path, "mesh file"), path); }
+TriangleMesh readPly(const std::string& path) {
+    return parsePly(readWholeFile(path, "mesh file"), path);
+}
 
 }  // namespace btfracture

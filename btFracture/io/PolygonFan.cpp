@@ -7,7 +7,8 @@
 namespace btfracture {
 
 void PolygonFan::add(const std::vector<int>& corners) {
-    for (size_t k = 1; k + 1 < corners.size(); ++k) mesh_.triangles.push_back({corners[0], corners[k], corners[k + 1]});
+    for (size_t k = 1; k + 1 < corners.size(); ++k)
+        mesh_.triangles.push_back({corners[0], corners[k], corners[k + 1]});
     if (corners.size() > 3) {
         ++polygons_;
         maxCorners_ = std::max(maxCorners_, static_cast<int>(corners.size()));

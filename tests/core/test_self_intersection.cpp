@@ -20,12 +20,14 @@ TriangleMesh pair(const std::array<Eigen::Vector3d, 3>& a, const std::array<Eige
     return m;
 }
 
-size_t count(const TriangleMesh& m) { return findSelfIntersections(m).size(); }
+size_t count(const TriangleMesh& m) {
+    return findSelfIntersections(m).size();
+}
 
 TriangleMesh tetrahedron(const Eigen::Vector3d& shift, int firstIndex) {
     TriangleMesh m;
-    m.vertices = {shift + Eigen::Vector3d(0, 0, 0), shift + Eigen::Vector3d(1, 0, 0), shift + Eigen::Vector3d(0, 1, 0),
-                  shift + Eigen::Vector3d(0, 0, 1)};
+    m.vertices = {shift + Eigen::Vector3d(0, 0, 0), shift + Eigen::Vector3d(1, 0, 0),
+                  shift + Eigen::Vector3d(0, 1, 0), shift + Eigen::Vector3d(0, 0, 1)};
     const int o = firstIndex;
     m.triangles = {{o, o + 2, o + 1}, {o, o + 1, o + 3}, {o, o + 3, o + 2}, {o + 1, o + 2, o + 3}};
     return m;
@@ -48,7 +50,8 @@ TriangleMesh uvSphere(int rings, int segments) {
     for (int r = 1; r < rings; ++r)
         for (int s = 0; s < segments; ++s) {
             const double theta = M_PI * r / rings, phi = 2 * M_PI * s / segments;
-            m.vertices.push_back({std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
+            m.vertices.push_back(
+                {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
         }
     m.vertices.push_back({0, 0, -1});
     const int south = static_cast<int>(m.vertices.size()) - 1;
@@ -59,7 +62,8 @@ TriangleMesh uvSphere(int rings, int segments) {
             m.triangles.push_back({ring(r, s), ring(r + 1, s), ring(r + 1, s + 1)});
             m.triangles.push_back({ring(r, s), ring(r + 1, s + 1), ring(r, s + 1)});
         }
-    for (int s = 0; s < segments; ++s) m.triangles.push_back({south, ring(rings - 1, s + 1), ring(rings - 1, s)});
+    for (int s = 0; s < segments; ++s)
+        m.triangles.push_back({south, ring(rings - 1, s + 1), ring(rings - 1, s)});
     return m;
 }
 
@@ -68,9 +72,12 @@ TriangleMesh uvSphere(int rings, int segments) {
 TEST(SelfIntersection, LooseTrianglePairs) {
     using V = Eigen::Vector3d;
     // Crossing like an X: triangle b pierces a through its interior.
-    EXPECT_EQ(count(pair({V(0, 0, 0), V(2, 0, 0), V(0, 2, 0)}, {V(0.5, 0.5, -1), V(0.5, 0.5, 1), V(1.5, 1.5, 0)})), 1u);
+    EXPECT_EQ(
+        count(pair({V(0, 0, 0), V(2, 0, 0), V(0, 2, 0)}, {V(0.5, 0.5, -1), V(0.5, 0.5, 1), V(1.5, 1.5, 0)})),
+        1u);
     // Parallel planes 0.1 apart: no contact.
-    EXPECT_EQ(count(pair({V(0, 0, 0), V(2, 0, 0), V(0, 2, 0)}, {V(0, 0, 0.1), V(2, 0, 0.1), V(0, 2, 0.1)})), 0u);
+    EXPECT_EQ(count(pair({V(0, 0, 0), V(2, 0, 0), V(0, 2, 0)}, {V(0, 0, 0.1), V(2, 0, 0.1), V(0, 2, 0.1)})),
+              0u);
     // Crossing the plane, but outside the other triangle.
     EXPECT_EQ(count(pair({V(0, 0, 0), V(1, 0, 0), V(0, 1, 0)}, {V(2, 2, -1), V(2, 2, 1), V(3, 3, 0)})), 0u);
     // Coplanar overlap, coplanar apart, coplanar one inside the other.
@@ -78,7 +85,9 @@ TEST(SelfIntersection, LooseTrianglePairs) {
     EXPECT_EQ(count(pair({V(0, 0, 0), V(1, 0, 0), V(0, 1, 0)}, {V(2, 2, 0), V(3, 2, 0), V(2, 3, 0)})), 0u);
     EXPECT_EQ(count(pair({V(0, 0, 0), V(4, 0, 0), V(0, 4, 0)}, {V(1, 1, 0), V(2, 1, 0), V(1, 2, 0)})), 1u);
     // A corner touching the other's face counts (a solid must not touch itself).
-    EXPECT_EQ(count(pair({V(0, 0, 0), V(2, 0, 0), V(0, 2, 0)}, {V(0.5, 0.5, 0), V(0.5, 0.5, 1), V(1, 0.5, 1)})), 1u);
+    EXPECT_EQ(
+        count(pair({V(0, 0, 0), V(2, 0, 0), V(0, 2, 0)}, {V(0.5, 0.5, 0), V(0.5, 0.5, 1), V(1, 0.5, 1)})),
+        1u);
 }
 
 TEST(SelfIntersection, NeighboursSharingAVertex) {

@@ -31,7 +31,9 @@ std::string loadError(const std::string& path) {
     return "(no error)";
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 // Collects warnings while alive.
 struct WarningCapture {
@@ -124,21 +126,25 @@ TEST(MeshReader, InsideOutLoadsFlippedWithWarning) {
 
 TEST(MeshReader, SyntaxErrorsNameFileAndLine) {
     const std::string vertex = loadError(kBad + "malformed_vertex.obj");
-    EXPECT_TRUE(contains(vertex, kBad + "malformed_vertex.obj:4: expected a number for vertex coordinate 2, got 'abc'"))
+    EXPECT_TRUE(contains(
+        vertex, kBad + "malformed_vertex.obj:4: expected a number for vertex coordinate 2, got 'abc'"))
         << vertex;
     const std::string index = loadError(kBad + "bad_index.obj");
-    EXPECT_TRUE(contains(index, kBad + "bad_index.obj:7: vertex index 9 out of range (4 vertices defined so far)"))
+    EXPECT_TRUE(
+        contains(index, kBad + "bad_index.obj:7: vertex index 9 out of range (4 vertices defined so far)"))
         << index;
     const std::string ply = loadError(kBad + "truncated.ply");
     EXPECT_TRUE(contains(ply, kBad + "truncated.ply:") && contains(ply, "face 3: file ends early")) << ply;
-    EXPECT_TRUE(contains(loadError(kBad + "unknown.stl"), "unsupported extension '.stl' (expected .obj or .ply)"));
+    EXPECT_TRUE(
+        contains(loadError(kBad + "unknown.stl"), "unsupported extension '.stl' (expected .obj or .ply)"));
 
     const std::pair<const char*, const char*> objCases[] = {
         {"v 1 2\n", "x.obj:1: expected 3 vertex coordinates after 'v'"},
         {"v 0 0 0\nv 1 0 0\nf 1 2\n", "x.obj:3: expected at least 3 vertex indices"},
         {"v 0 0 0\nf 1 0 1\n", "x.obj:2: vertex index 0 out of range"},
         {"v 0 0 0\nf 1 -2 1\n", "x.obj:2: vertex index -2 out of range"},
-        {"v 0 0 0\nf 1/a 1 1\n", "x.obj:2: expected a face corner of the form i, i/t, i/t/n or i//n, got '1/a'"},
+        {"v 0 0 0\nf 1/a 1 1\n",
+         "x.obj:2: expected a face corner of the form i, i/t, i/t/n or i//n, got '1/a'"},
         {"# ok\nbogus 1 2\n", "x.obj:2: unknown OBJ record 'bogus'"},
     };
     for (const auto& [text, expected] : objCases) {
@@ -150,7 +156,8 @@ TEST(MeshReader, SyntaxErrorsNameFileAndLine) {
         }
     }
     const std::pair<const char*, const char*> plyCases[] = {
-        {"ply\nformat ascii 2.0\nend_header\n", "x.ply: header line 2: expected 'format ascii|binary_little_endian"},
+        {"ply\nformat ascii 2.0\nend_header\n",
+         "x.ply: header line 2: expected 'format ascii|binary_little_endian"},
         {"obj\n", "x.ply: header line 1: expected 'ply'"},
         {"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n",
          "x.ply: expected a 'vertex' and a 'face' element"},
@@ -176,7 +183,8 @@ TEST(MeshReader, SyntaxErrorsNameFileAndLine) {
 
 TEST(MeshReader, MissingFileNamesPath) {
     const std::string message = loadError(kBad + "does_not_exist.obj");
-    EXPECT_TRUE(contains(message, "cannot open mesh file '" + kBad + "does_not_exist.obj': No such file or directory"))
+    EXPECT_TRUE(contains(message,
+                         "cannot open mesh file '" + kBad + "does_not_exist.obj': No such file or directory"))
         << message;
 }
 
@@ -205,7 +213,8 @@ TEST(MeshReader, ObjAndPlyFormatsAgree) {
 TEST(ObjWriter, RoundTripIsExactAtFullPrecision) {
     const TriangleMesh original = readMesh(kMeshes + "spot.obj");
     TriangleMesh moved = original;
-    for (auto& v : moved.vertices) v = 1.0 / 3.0 * v + Eigen::Vector3d(0.1, -2.0 / 7.0, 1e-3);  // no short decimals
+    for (auto& v : moved.vertices)
+        v = 1.0 / 3.0 * v + Eigen::Vector3d(0.1, -2.0 / 7.0, 1e-3);  // no short decimals
     const std::string path = tempPath("roundtrip.obj");
     writeObj(path, moved, 17);
     const TriangleMesh back = readMesh(path);

@@ -1,0 +1,218 @@
+#include <btFracture/bem/BoundaryOperators.h>
+
+#include <btFracture/core/CrossMatrix.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace btfracture {
+namespace {
+
+// Per-triangle data the assembly loop reads many times.
+struct AssemblyCache {
+    std::vector<Panel> panels;
+    std::vector<std::array<Eigen::Vector3d, 3>> curls;  // n x grad(phi_a), constant per triangle
+    std::vector<std::array<PanelPoints, 4>> points;     // one point set per separated rule level
+    std::array<int, 4> degrees{};
+    // Node-sharing partners tau >= t of each triangle t with their Sauter-Schwab integrals.
+    std::vector<std::vector<std::pair<int, PairIntegrals>>> singular;
+};
+
+AssemblyCache buildCache(const SurfaceMesh& mesh, const QuadratureSettings& q) {
+    const int m = mesh.triangleCount();
+    AssemblyCache c;
+    c.degrees = {q.nearDegree, q.midDegree, q.farDegree, q.veryFarDegree};
+    c.panels.reserve(m);
+    c.curls.resize(m);
+    c.points.resize(m);
+    c.singular.resize(m);
+    for (int t = 0; t < m; ++t) {
+        c.panels.push_back(panelOf(mesh, t));
+        for (int a = 0; a < 3; ++a) c.curls[t][a] = mesh.hatCurl(t, a);
+    }
+#pragma omp parallel for schedule(dynamic, 16)
+    for (int t = 0; t < m; ++t) {
+        for (int level = 0; level < 4; ++level) c.points[t][level] = PanelPoints(c.panels[t], c.degrees[level]);
+        std::vector<int> partners;
+        for (int v : mesh.triangle(t))
+            for (int other : mesh.trianglesAtNode(v))
+                if (other >= t) partners.push_back(other);
+        std::sort(partners.begin(), partners.end());
+        partners.erase(std::unique(partners.begin(), partners.end()), partners.end());
+        for (int other : partners) c.singular[t].emplace_back(other, integrateSingular(c.panels[t], c.panels[other], q));
+    }
+    return c;
+}
+
+PairIntegrals separatedPair(const SurfaceMesh& mesh, const AssemblyCache& c, const QuadratureSettings& q, int sigma,
+                            int tau) {
+    const double eta = (mesh.centroid(sigma) - mesh.centroid(tau)).norm() /
+                       std::max(mesh.diameter(sigma), mesh.diameter(tau));
+    const int degree = separatedRuleDegree(eta, q);
+    const int level = static_cast<int>(std::find(c.degrees.begin(), c.degrees.end(), degree) - c.degrees.begin());
+    return integrateSeparated(c.panels[sigma], c.points[sigma][level], c.panels[tau], c.points[tau][level]);
+}
+
+// Columns of S [v] for symmetric S (s00 s01 s02 s11 s12 s22): column j is S (v x e_j);
+// out is column-major 3x3.
+inline void symTimesCross(const double* S, const double* v, double* out) {
+    const double s[3][3] = {{S[0], S[1], S[2]}, {S[1], S[3], S[4]}, {S[2], S[4], S[5]}};
+    for (int i = 0; i < 3; ++i) {
+        out[0 + i] = v[2] * s[i][1] - v[1] * s[i][2];
+        out[3 + i] = v[0] * s[i][2] - v[2] * s[i][0];
+        out[6 + i] = v[1] * s[i][0] - v[0] * s[i][1];
+    }
+}
+
+// The material-scaled integrals of one pair: a = I0 / 4 pi and L = 4 mu^2 B with
+// B = int int U* = ((3 - 4 nu) I0 Id + J) / (16 pi mu (1 - nu)).
+struct PairCoefficients {
+    double a;
+    double L[6];
+};
+
+PairCoefficients coefficientsOf(const PairIntegrals& pi, double mu, double nu) {
+    const double lameScale = mu / (4.0 * M_PI * (1.0 - nu));
+    const double diag = lameScale * (3.0 - 4.0 * nu) * pi.inverseDistance;
+    return {pi.inverseDistance / (4.0 * M_PI),
+            {lameScale * pi.dyadic(0, 0) + diag, lameScale * pi.dyadic(0, 1), lameScale * pi.dyadic(0, 2),
+             lameScale * pi.dyadic(1, 1) + diag, lameScale * pi.dyadic(1, 2), lameScale * pi.dyadic(2, 2) + diag}};
+}
+
+// K block of test hat with curl c against trial hat with curl d, scaled, added to out(i, j):
+//   mu a [4 (c.d) Id - 2 d c^T - c d^T] + [c] L [d]     (P = L [d], column-major)
+template <class Out>
+inline void addStiffnessBlock(const double* c, const double* d, const double* P, double muA, double scale, Out&& out) {
+    const double g4 = 4.0 * muA * (c[0] * d[0] + c[1] * d[1] + c[2] * d[2]);
+    for (int j = 0; j < 3; ++j) {
+        const double* pj = P + 3 * j;
+        const double cross[3] = {c[1] * pj[2] - c[2] * pj[1], c[2] * pj[0] - c[0] * pj[2], c[0] * pj[1] - c[1] * pj[0]};
+        for (int i = 0; i < 3; ++i) {
+            double v = cross[i] - muA * (2.0 * d[i] * c[j] + c[i] * d[j]);
+            if (i == j) v += g4;
+            out(i, j, scale * v);
+        }
+    }
+}
+
+// F block of test hat with curl c (on triangle s) against the traction of triangle t:
+//   [c] L / (2 mu) - a [c] + (mass - int_t K_Laplace phi) Id,   [c] L = -(L [c])^T
+template <class Out>
+inline void addLoadBlock(const double* c, const PairCoefficients& k, double mu, double scalar, Out&& out) {
+    double Q[9];
+    symTimesCross(k.L, c, Q);
+    const double cross[3][3] = {{0, -c[2], c[1]}, {c[2], 0, -c[0]}, {-c[1], c[0], 0}};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) out(i, j, -Q[3 * i + j] * (0.5 / mu) - k.a * cross[i][j] + (i == j ? scalar : 0.0));
+}
+
+// dst += src^T in cache-sized tiles (a plain transposed read misses the cache on every
+// element of these large matrices). Each entry is written once: deterministic in parallel.
+template <class Dst, class Src>
+void addTransposed(Dst& dst, const Src& src) {
+    constexpr int kTile = 64;
+    const int rows = static_cast<int>(dst.rows()), cols = static_cast<int>(dst.cols());
+#pragma omp parallel for schedule(static)
+    for (int i0 = 0; i0 < rows; i0 += kTile)
+        for (int j0 = 0; j0 < cols; j0 += kTile) {
+            const int h = std::min(kTile, rows - i0), w = std::min(kTile, cols - j0);
+            dst.block(i0, j0, h, w) += src.block(j0, i0, w, h).transpose();
+        }
+}
+
+}  // namespace
+
+Panel panelOf(const SurfaceMesh& mesh, int t) {
+    const auto& tri = mesh.triangle(t);
+    return Panel{tri, {mesh.node(tri[0]), mesh.node(tri[1]), mesh.node(tri[2])}, mesh.normal(t), mesh.area(t)};
+}
+
+std::vector<std::vector<int>> colourTrianglesByNodes(const SurfaceMesh& mesh) {
+    const int m = mesh.triangleCount();
+    std::vector<int> colour(m, -1);
+    std::vector<std::vector<int>> classes;
+    std::vector<char> used;
+    for (int t = 0; t < m; ++t) {
+        used.assign(classes.size() + 1, 0);
+        for (int v : mesh.triangle(t))
+            for (int other : mesh.trianglesAtNode(v))
+                if (colour[other] >= 0) used[colour[other]] = 1;
+        const int c = static_cast<int>(std::find(used.begin(), used.end(), 0) - used.begin());
+        if (c == static_cast<int>(classes.size())) classes.emplace_back();
+        colour[t] = c;
+        classes[c].push_back(t);
+    }
+    return classes;
+}
+
+BoundaryOperators assembleBoundaryOperators(const SurfaceMesh& mesh, const ElasticConstants& material,
+                                            const QuadratureSettings& quadrature) {
+    const int n = mesh.nodeCount(), m = mesh.triangleCount();
+    const double mu = material.shearModulus, nu = material.poissonRatio;
+    const AssemblyCache cache = buildCache(mesh, quadrature);
+
+    // Each unordered pair {sigma <= tau} is integrated once, by its lower triangle sigma (the
+    // "owner"). The owner writes only rows of its own nodes (of `upper` and F) and rows of its
+    // own traction triangle (of `reverse`); triangles of one colour share no node, so owners of
+    // one colour never write the same entry, and every entry is summed in a fixed order.
+    //   K = upper + upper^T        (pair blocks for sigma < tau, half of the diagonal pairs)
+    //   F = forward + reverse^T    (test hats on sigma / on tau)
+    // Row-major scratch: an owner's rows are contiguous, which keeps its writes in cache.
+    using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    BoundaryOperators ops;
+    RowMajorMatrix upper = RowMajorMatrix::Zero(3 * n, 3 * n);
+    ops.tractionToLoad.setZero(3 * n, 3 * m);
+    RowMajorMatrix reverse = RowMajorMatrix::Zero(3 * m, 3 * n);
+
+    for (const auto& owners : colourTrianglesByNodes(mesh)) {
+        const int count = static_cast<int>(owners.size());
+#pragma omp parallel for schedule(dynamic, 1)
+        for (int k = 0; k < count; ++k) {
+            const int sigma = owners[k];
+            const auto& ownerNodes = mesh.triangle(sigma);
+            auto singular = cache.singular[sigma].begin();
+            for (int tau = sigma; tau < m; ++tau) {
+                PairIntegrals pi;  // x on sigma, y on tau
+                if (singular != cache.singular[sigma].end() && singular->first == tau)
+                    pi = (singular++)->second;
+                else
+                    pi = separatedPair(mesh, cache, quadrature, sigma, tau);
+                const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
+                const auto& partnerNodes = mesh.triangle(tau);
+                const double stiffnessScale = tau == sigma ? 0.5 : 1.0;
+                double P[3][9];  // L [d_b]
+                for (int b = 0; b < 3; ++b) symTimesCross(coeff.L, cache.curls[tau][b].data(), P[b]);
+                for (int ia = 0; ia < 3; ++ia) {
+                    const double* c = cache.curls[sigma][ia].data();
+                    const int row = 3 * ownerNodes[ia];
+                    for (int ib = 0; ib < 3; ++ib) {
+                        const int col = 3 * partnerNodes[ib];
+                        addStiffnessBlock(c, cache.curls[tau][ib].data(), P[ib], mu * coeff.a, stiffnessScale,
+                                          [&](int i, int j, double v) { upper(row + i, col + j) += v; });
+                    }
+                    // Test hat phi_p on sigma, traction on tau (x on tau, density on sigma).
+                    const double scalar = -pi.doubleLayerYX[ia] + (tau == sigma ? mesh.area(sigma) / 6.0 : 0.0);
+                    addLoadBlock(c, coeff, mu, scalar,
+                                 [&](int i, int j, double v) { ops.tractionToLoad(row + i, 3 * tau + j) += v; });
+                }
+                if (tau == sigma) continue;
+                for (int ib = 0; ib < 3; ++ib) {
+                    // Test hat phi_q on tau, traction on sigma: stored transposed in the owner's rows.
+                    const int col = 3 * partnerNodes[ib];
+                    addLoadBlock(cache.curls[tau][ib].data(), coeff, mu, -pi.doubleLayerXY[ib],
+                                 [&](int i, int j, double v) { reverse(3 * sigma + j, col + i) += v; });
+                }
+            }
+        }
+    }
+    // Row-major storage of `upper` read as column-major is upper^T; adding its transpose gives K.
+    const Eigen::Map<const Eigen::MatrixXd> upperTransposed(upper.data(), 3 * n, 3 * n);
+    ops.stiffness = upperTransposed;
+    addTransposed(ops.stiffness, upperTransposed);
+    addTransposed(ops.tractionToLoad, reverse);
+    return ops;
+}
+
+}  // namespace btfracture

@@ -1,0 +1,72 @@
+#pragma once
+// Pure-Neumann elastostatics on one body (paper §3): assemble K and F, regularise with the
+// rigid-mode operator T (Eq. 1-3), factor K_R = K^T K + gamma T^T T once, then
+// u = K_R^-1 K^T F q for any number of traction fields q.
+#include <btFracture/bem/BoundaryOperators.h>
+#include <btFracture/bem/SurfaceMesh.h>
+#include <btFracture/core/Material.h>
+
+#include <Eigen/Core>
+
+namespace btfracture {
+
+struct ElasticSolverSettings {
+    QuadratureSettings quadrature;
+    // Tractions whose net force or torque exceed this fraction of their total magnitude are
+    // rejected (Eq. 6 must remove them first).
+    double balanceTolerance = 1e-8;
+};
+
+struct NetLoad {
+    Eigen::Vector3d force;   // int q dx [N]
+    Eigen::Vector3d torque;  // int x x q dx about the centre of mass [N m]
+    double relative;         // max(|force|, |torque| / radius) / int |q| dx
+};
+
+struct ElasticSolverTimings {
+    double assembly = 0.0;        // K and F [s]
+    double regularisation = 0.0;  // K^T K + gamma T^T T [s]
+    double factorisation = 0.0;   // dense Cholesky [s]
+};
+
+class ElasticSolver {
+public:
+    // Assembles and factors; throws btfracture::Error for a bad mesh or a system that cannot be
+    // factored (reporting its reciprocal condition estimate).
+    ElasticSolver(SurfaceMesh mesh, const Material& material, const ElasticSolverSettings& settings = {});
+
+    const SurfaceMesh& mesh() const { return mesh_; }
+    const Material& material() const { return material_; }
+
+    // Nodal displacements u (3n, [m], node-major) for P0 tractions q (3m, [Pa], triangle-major,
+    // body frame). Throws if q carries net force or torque (see NetLoad).
+    Eigen::VectorXd displacements(const Eigen::VectorXd& tractions) const;
+
+    // K_R^-1 B for any right-hand sides B (3n x k); used by the crack Schur complement.
+    Eigen::MatrixXd solveRegularised(const Eigen::MatrixXd& rhs) const;
+
+    NetLoad netLoad(const Eigen::VectorXd& tractions) const;
+
+    const Eigen::MatrixXd& stiffness() const { return operators_.stiffness; }
+    const BoundaryOperators& operators() const { return operators_; }
+    const Eigen::MatrixXd& regulariser() const { return rigidModes_; }  // T (6 x 3n), Eq. 1-2
+    double regularisationWeight() const { return gamma_; }
+    double reciprocalCondition() const { return rcond_; }
+    const ElasticSolverTimings& timings() const { return timings_; }
+    // Bytes held by dense matrices (K, the Cholesky factor, F).
+    std::size_t matrixBytes() const;
+
+private:
+    SurfaceMesh mesh_;
+    Material material_;
+    ElasticSolverSettings settings_;
+    BoundaryOperators operators_;
+    Eigen::MatrixXd rigidModes_;     // T (6 x 3n)
+    Eigen::MatrixXd netLoadOperator_;  // A (6 x 3m)
+    Eigen::MatrixXd factor_;         // lower Cholesky factor of K_R
+    double gamma_ = 0.0;
+    double rcond_ = 0.0;
+    ElasticSolverTimings timings_;
+};
+
+}  // namespace btfracture

@@ -1,0 +1,77 @@
+#pragma once
+// Material-independent double integrals over one pair of flat triangles, the only quadrature
+// the Galerkin operators need (see FORMULATION.md): after integration by parts the
+// hypersingular operator and the adjoint double layer reduce to the weakly singular kernels
+// 1/r and r r^T / r^3 with constant densities, plus the Laplace double layer with P1 densities.
+#include <btFracture/bem/SauterSchwab.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace btfracture {
+
+// One flat triangle as the quadrature sees it. `ids` are node numbers in one numbering shared
+// by both triangles of a pair: shared ids decide the singular case.
+struct Panel {
+    std::array<int, 3> ids;
+    std::array<Eigen::Vector3d, 3> corners;
+    Eigen::Vector3d normal;  // unit normal
+    double area;
+};
+
+struct PairIntegrals {
+    double inverseDistance = 0.0;                        // int_x int_y 1/r
+    Eigen::Matrix3d dyadic = Eigen::Matrix3d::Zero();    // int_x int_y r r^T / r^3, r = x - y
+    // Laplace double layer with P1 density on the other panel:
+    // doubleLayerXY[b] = int_x int_y (x - y).n_y / (4 pi r^3) phi_b(y), b = corner of panel y
+    // doubleLayerYX[a] = int_y int_x (y - x).n_x / (4 pi r^3) phi_a(x), a = corner of panel x
+    Eigen::Vector3d doubleLayerXY = Eigen::Vector3d::Zero();
+    Eigen::Vector3d doubleLayerYX = Eigen::Vector3d::Zero();
+};
+
+struct QuadratureSettings {
+    // Gauss points per axis of the Sauter-Schwab 4-cube (relative errors of the 1/r and r r^T/r^3
+    // integrals: about 1e-8 / 1e-6 at 6 points, 1e-7 / 1e-6 at 5 for edge and vertex pairs).
+    int identicalPoints = 6;
+    int edgePoints = 5;
+    int vertexPoints = 5;
+    // Regular pairs: rule degree per triangle chosen by distance / size ratio eta.
+    double nearRatio = 1.5;   // eta below this: `nearDegree`
+    double midRatio = 3.0;    // below this: `midDegree`
+    double farRatio = 6.0;    // below this: `farDegree`, beyond: `veryFarDegree`
+    int nearDegree = 8;
+    int midDegree = 5;
+    int farDegree = 4;
+    int veryFarDegree = 2;
+};
+
+PairRelation relationOf(const Panel& x, const Panel& y);
+
+// Degree of the triangle rule for a separated pair whose centroid distance is eta times the
+// larger panel diameter.
+int separatedRuleDegree(double eta, const QuadratureSettings& settings);
+
+// Quadrature points of one panel for one rule degree, precomputed for the separated-pair loop:
+// per point x, y, z, then the three hat values, then weight * area.
+struct PanelPoints {
+    static constexpr int kStride = 7;
+    PanelPoints() = default;
+    PanelPoints(const Panel& panel, int degree);
+    std::vector<double> data;
+    int count = 0;
+};
+
+// Separated pair with precomputed points (both at the degree separatedRuleDegree gives).
+PairIntegrals integrateSeparated(const Panel& x, const PanelPoints& px, const Panel& y, const PanelPoints& py);
+// Identical, edge- or vertex-adjacent pair by Sauter-Schwab quadrature.
+PairIntegrals integrateSingular(const Panel& x, const Panel& y, const QuadratureSettings& settings);
+
+// Integrates the pair (x, y). Identical, edge- and vertex-adjacent pairs use Sauter-Schwab
+// quadrature; separated pairs use triangle rules whose degree grows as the pair gets closer.
+// Deterministic; integratePair(y, x) equals integratePair(x, y) with the roles swapped up to
+// rounding, so callers that need exact symmetry pass pairs in a canonical order.
+PairIntegrals integratePair(const Panel& x, const Panel& y, const QuadratureSettings& settings);
+
+}  // namespace btfracture

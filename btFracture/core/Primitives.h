@@ -1,0 +1,20 @@
+#pragma once
+// Closed triangle meshes of simple solids, outward oriented, for tests, demos and Bullet
+// primitives that need a surface mesh.
+#include <btFracture/core/TriangleMesh.h>
+
+namespace btfracture {
+
+// Box centred at the origin with the given half extents [m]; each face is split into a grid of
+// about `cellsPerUnit * edge length` squares (at least one per direction), two triangles each.
+TriangleMesh makeBox(const Eigen::Vector3d& halfExtents, double cellsPerUnit = 0.0);
+
+// Box with an explicit number of grid cells along x, y and z.
+TriangleMesh makeBox(const Eigen::Vector3d& halfExtents, int cellsX, int cellsY, int cellsZ);
+
+// Geodesic sphere of the given radius [m]: each icosahedron face split into frequency^2
+// triangles (20 f^2 in all), vertices projected onto the sphere. Frequency 2^k gives the
+// k-times subdivided icosphere.
+TriangleMesh makeGeodesicSphere(double radius, int frequency);
+
+}  // namespace btfracture

@@ -1,0 +1,329 @@
+#include <btFracture/io/SceneWorld.h>
+
+#include <btFracture/core/Error.h>
+#include <btFracture/core/Log.h>
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/io/MeshReader.h>
+
+#include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
+#include <BulletCollision/Gimpact/btGImpactShape.h>
+#include <LinearMath/btConvexHullComputer.h>
+#include <btBulletDynamicsCommon.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace btfracture {
+namespace {
+
+btVector3 toBullet(const Eigen::Vector3d& v) {
+    return btVector3(static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()),
+                     static_cast<btScalar>(v.z()));
+}
+
+btTransform toBullet(const Eigen::Isometry3d& pose) {
+    const Eigen::Quaterniond q(pose.linear());
+    return btTransform(btQuaternion(static_cast<btScalar>(q.x()), static_cast<btScalar>(q.y()),
+                                    static_cast<btScalar>(q.z()), static_cast<btScalar>(q.w())),
+                       toBullet(Eigen::Vector3d(pose.translation())));
+}
+
+Eigen::Isometry3d fromBullet(const btTransform& t) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    const btMatrix3x3& r = t.getBasis();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) pose.linear()(i, j) = r[i][j];
+    pose.translation() = Eigen::Vector3d(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
+    return pose;
+}
+
+// Display and output surfaces of the primitive shapes.
+TriangleMesh boxSurface(const Eigen::Vector3d& halfExtents) {
+    TriangleMesh m;
+    for (int i = 0; i < 8; ++i)
+        m.vertices.push_back(
+            halfExtents.cwiseProduct(Eigen::Vector3d(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1)));
+    const int quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+    for (const auto& q : quads) {
+        m.triangles.push_back({q[0], q[1], q[2]});
+        m.triangles.push_back({q[0], q[2], q[3]});
+    }
+    return m;
+}
+
+// Icosahedron subdivided `levels` times, vertices on the sphere.
+TriangleMesh sphereSurface(double radius, int levels) {
+    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+    TriangleMesh m;
+    m.vertices = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+    m.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                   {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    for (int level = 0; level < levels; ++level) {
+        std::map<std::pair<int, int>, int> midpoints;
+        auto midpoint = [&](int a, int b) {
+            const auto key = std::minmax(a, b);
+            const auto found = midpoints.find(key);
+            if (found != midpoints.end()) return found->second;
+            m.vertices.push_back(0.5 * (m.vertices[a] + m.vertices[b]));
+            return midpoints[key] = static_cast<int>(m.vertices.size()) - 1;
+        };
+        std::vector<std::array<int, 3>> finer;
+        for (const auto& tri : m.triangles) {
+            const int ab = midpoint(tri[0], tri[1]), bc = midpoint(tri[1], tri[2]),
+                      ca = midpoint(tri[2], tri[0]);
+            finer.insert(finer.end(), {{tri[0], ab, ca}, {ab, tri[1], bc}, {ca, bc, tri[2]}, {ab, bc, ca}});
+        }
+        m.triangles = std::move(finer);
+    }
+    for (auto& v : m.vertices) v = radius * v.normalized();
+    return m;
+}
+
+constexpr double kPlaneDisplayHalfSize = 10.0;  // [m]
+
+TriangleMesh planeSurface(const Eigen::Vector3d& normal, double offset) {
+    const Eigen::Vector3d helper =
+        std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d t1 = normal.cross(helper).normalized() * kPlaneDisplayHalfSize;
+    const Eigen::Vector3d t2 = normal.cross(t1);
+    const Eigen::Vector3d centre = normal * offset;
+    TriangleMesh m;
+    m.vertices = {centre - t1 - t2, centre + t1 - t2, centre + t1 + t2, centre - t1 + t2};
+    m.triangles = {{0, 1, 2}, {0, 2, 3}};
+    return m;
+}
+
+// Collision margin for a mesh body [m].
+double meshMargin(double volume) {
+    return std::min(0.04, 0.02 * std::cbrt(volume));
+}
+
+std::string bodyContext(const Scene& scene, const SceneBody& body) {
+    return scene.file + ": body '" + body.name + "'";
+}
+
+}  // namespace
+
+std::unique_ptr<btDiscreteDynamicsWorld> SceneWorldFactory::createWorld(
+    btCollisionDispatcher& dispatcher, btBroadphaseInterface& broadphase, btConstraintSolver& solver,
+    btCollisionConfiguration& configuration, const Scene&) const {
+    return std::make_unique<btDiscreteDynamicsWorld>(&dispatcher, &broadphase, &solver, &configuration);
+}
+
+std::unique_ptr<btRigidBody> SceneWorldFactory::createBody(
+    const btRigidBody::btRigidBodyConstructionInfo& info, const SceneBody&, const TriangleMesh&) const {
+    return std::make_unique<btRigidBody>(info);
+}
+
+struct SceneWorld::Impl {
+    // Everything one body's shape points into, kept alive as long as the body.
+    struct ShapeStorage {
+        std::vector<btScalar> vertices;
+        std::vector<int> indices;
+        std::unique_ptr<btTriangleIndexVertexArray> meshInterface;
+        std::unique_ptr<btCollisionShape> shape;
+    };
+
+    Scene scene;
+    std::unique_ptr<btDefaultCollisionConfiguration> configuration;
+    std::unique_ptr<btCollisionDispatcher> dispatcher;
+    std::unique_ptr<btDbvtBroadphase> broadphase;
+    std::unique_ptr<btSequentialImpulseConstraintSolver> solver;
+    std::unique_ptr<btDiscreteDynamicsWorld> world;
+    std::vector<ShapeStorage> shapes;  // parallel to bodies
+    std::vector<std::unique_ptr<btRigidBody>> ownedBodies;
+    std::vector<Body> bodies;
+    int frames = 0;
+
+    ~Impl() {
+        // Bodies leave the world before anything they reference goes away; then the world goes
+        // before the parts it was built on.
+        for (auto it = ownedBodies.rbegin(); it != ownedBodies.rend(); ++it)
+            if (world && *it) world->removeRigidBody(it->get());
+        ownedBodies.clear();
+        shapes.clear();
+        world.reset();
+        solver.reset();
+        broadphase.reset();
+        dispatcher.reset();
+        configuration.reset();
+    }
+
+    void addBody(const SceneBody& description, const SceneWorldFactory& factory);
+};
+
+void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFactory& factory) {
+    ShapeStorage storage;
+    Body body;
+    body.name = description.name;
+    const SceneShape& shape = description.shape;
+    // Pose of the body frame (centre of mass, principal axes) in the shape's own frame.
+    Eigen::Isometry3d bodyInShape = Eigen::Isometry3d::Identity();
+    Eigen::Vector3d unitDensityInertia = Eigen::Vector3d::Zero();  // principal moments / density [m^5]
+
+    switch (shape.type) {
+        case SceneShapeType::Mesh: {
+            TriangleMesh mesh;
+            MassProperties mass;
+            PrincipalAxes axes;
+            try {
+                mesh = readMesh(shape.meshFile);
+                for (auto& v : mesh.vertices) v = v.cwiseProduct(description.scale);
+                mass = computeMassProperties(mesh);
+                axes = principalAxes(mass.inertiaPerDensity);
+            } catch (const Error& e) {
+                throw Error(bodyContext(scene, description) + ": " + e.what());
+            }
+            for (auto& v : mesh.vertices) v = axes.rotation.transpose() * (v - mass.centreOfMass);
+            bodyInShape.linear() = axes.rotation;
+            bodyInShape.translation() = mass.centreOfMass;
+            unitDensityInertia = axes.moments;
+            body.volume = mass.volume;
+            const double margin = meshMargin(mass.volume);
+            if (shape.collision == SceneMeshCollision::ConvexHull) {
+                // Shrink the hull by the margin so that hull + margin matches the mesh.
+                std::vector<double> coordinates;
+                for (const auto& v : mesh.vertices)
+                    coordinates.insert(coordinates.end(), {v.x(), v.y(), v.z()});
+                btConvexHullComputer hull;
+                const btScalar shift = hull.compute(coordinates.data(), 3 * sizeof(double),
+                                                    static_cast<int>(mesh.vertices.size()),
+                                                    static_cast<btScalar>(margin), btScalar(0.25));
+                if (!(shift > 0) || hull.vertices.size() < 4)
+                    throw Error(bodyContext(scene, description) + ": convex hull of '" + shape.meshFile +
+                                "' failed");
+                if (shift < 0.999 * margin)
+                    logf(LogLevel::Info, bodyContext(scene, description), ": hull shrink limited to ", shift,
+                         " m (margin ", margin, " m) by the hull's thickness");
+                auto convex = std::make_unique<btConvexHullShape>(&hull.vertices[0].x(), hull.vertices.size(),
+                                                                  sizeof(btVector3));
+                convex->setMargin(shift);
+                storage.shape = std::move(convex);
+            } else {
+                for (const auto& v : mesh.vertices)
+                    storage.vertices.insert(storage.vertices.end(),
+                                            {static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()),
+                                             static_cast<btScalar>(v.z())});
+                for (const auto& t : mesh.triangles)
+                    storage.indices.insert(storage.indices.end(), {t[0], t[1], t[2]});
+                storage.meshInterface = std::make_unique<btTriangleIndexVertexArray>(
+                    static_cast<int>(mesh.triangles.size()), storage.indices.data(),
+                    static_cast<int>(3 * sizeof(int)), static_cast<int>(mesh.vertices.size()),
+                    storage.vertices.data(), static_cast<int>(3 * sizeof(btScalar)));
+                auto gimpact = std::make_unique<btGImpactMeshShape>(storage.meshInterface.get());
+                gimpact->setMargin(static_cast<btScalar>(margin));
+                gimpact->updateBound();
+                storage.shape = std::move(gimpact);
+            }
+            body.surface = std::move(mesh);
+            break;
+        }
+        case SceneShapeType::Box: {
+            const Eigen::Vector3d h = shape.halfExtents.cwiseProduct(description.scale);
+            storage.shape = std::make_unique<btBoxShape>(toBullet(h));
+            body.surface = boxSurface(h);
+            body.volume = 8.0 * h.prod();
+            const Eigen::Vector3d h2 = h.cwiseProduct(h);
+            unitDensityInertia =
+                body.volume / 3.0 * Eigen::Vector3d(h2.y() + h2.z(), h2.x() + h2.z(), h2.x() + h2.y());
+            break;
+        }
+        case SceneShapeType::Sphere: {
+            const double r = shape.radius * description.scale.x();
+            storage.shape = std::make_unique<btSphereShape>(static_cast<btScalar>(r));
+            body.surface = sphereSurface(r, 3);
+            body.volume = 4.0 / 3.0 * M_PI * r * r * r;
+            unitDensityInertia = Eigen::Vector3d::Constant(0.4 * body.volume * r * r);
+            break;
+        }
+        case SceneShapeType::Plane:
+            storage.shape = std::make_unique<btStaticPlaneShape>(toBullet(shape.normal),
+                                                                 static_cast<btScalar>(shape.offset));
+            body.surface = planeSurface(shape.normal, shape.offset);
+            break;
+    }
+    body.surface.name = description.name;
+
+    double mass = 0.0;
+    if (!description.isStatic())
+        mass = description.mass ? *description.mass : description.density * body.volume;
+    const Eigen::Vector3d inertia = body.volume > 0.0
+                                        ? Eigen::Vector3d(mass / body.volume * unitDensityInertia)
+                                        : Eigen::Vector3d::Zero();
+    Eigen::Isometry3d shapeInWorld = Eigen::Isometry3d::Identity();
+    shapeInWorld.translation() = description.position;
+    shapeInWorld.linear() = description.orientation.toRotationMatrix();
+
+    btRigidBody::btRigidBodyConstructionInfo info(static_cast<btScalar>(mass), nullptr, storage.shape.get(),
+                                                  toBullet(inertia));
+    info.m_startWorldTransform = toBullet(shapeInWorld * bodyInShape);
+    std::unique_ptr<btRigidBody> rigidBody = factory.createBody(info, description, body.surface);
+    if (!rigidBody) throw Error(bodyContext(scene, description) + ": the scene factory created no body");
+    rigidBody->setLinearVelocity(toBullet(description.linearVelocity));
+    rigidBody->setAngularVelocity(toBullet(description.angularVelocity));
+    world->addRigidBody(rigidBody.get());
+    body.rigidBody = rigidBody.get();
+    ownedBodies.push_back(std::move(rigidBody));
+    shapes.push_back(std::move(storage));
+    bodies.push_back(std::move(body));
+}
+
+SceneWorld::SceneWorld(const Scene& scene, const SceneWorldFactory& factory)
+    : impl_(std::make_unique<Impl>()) {
+    Impl& w = *impl_;
+    w.scene = scene;
+    w.configuration = std::make_unique<btDefaultCollisionConfiguration>();
+    w.dispatcher = std::make_unique<btCollisionDispatcher>(w.configuration.get());
+    const bool anyGImpact = std::any_of(scene.bodies.begin(), scene.bodies.end(), [](const SceneBody& b) {
+        return b.shape.type == SceneShapeType::Mesh && b.shape.collision == SceneMeshCollision::GImpact;
+    });
+    if (anyGImpact) btGImpactCollisionAlgorithm::registerAlgorithm(w.dispatcher.get());
+    w.broadphase = std::make_unique<btDbvtBroadphase>();
+    w.solver = std::make_unique<btSequentialImpulseConstraintSolver>();
+    w.world = factory.createWorld(*w.dispatcher, *w.broadphase, *w.solver, *w.configuration, scene);
+    if (!w.world) throw Error(scene.file + ": the scene factory created no world");
+    w.world->setGravity(toBullet(scene.world.gravity));
+    for (const SceneBody& body : scene.bodies) w.addBody(body, factory);
+}
+
+SceneWorld::~SceneWorld() = default;
+
+btDiscreteDynamicsWorld& SceneWorld::world() {
+    return *impl_->world;
+}
+const Scene& SceneWorld::scene() const {
+    return impl_->scene;
+}
+
+void SceneWorld::stepFrame() {
+    const SceneWorldSettings& settings = impl_->scene.world;
+    const btScalar h = static_cast<btScalar>(settings.dt / settings.substeps);
+    // maxSubSteps = 0: exactly one internal step of h per call, with no accumulator that could
+    // round to one step more or less.
+    for (int k = 0; k < settings.substeps; ++k) impl_->world->stepSimulation(h, 0);
+    ++impl_->frames;
+}
+
+int SceneWorld::framesTaken() const {
+    return impl_->frames;
+}
+double SceneWorld::time() const {
+    return impl_->frames * impl_->scene.world.dt;
+}
+const std::vector<SceneWorld::Body>& SceneWorld::bodies() const {
+    return impl_->bodies;
+}
+
+TriangleMesh SceneWorld::worldSurface(size_t index) const {
+    const Body& body = impl_->bodies.at(index);
+    const Eigen::Isometry3d pose = fromBullet(body.rigidBody->getWorldTransform());
+    TriangleMesh mesh = body.surface;
+    for (auto& v : mesh.vertices) v = pose * v;
+    return mesh;
+}
+
+}  // namespace btfracture

@@ -1,0 +1,40 @@
+# Installs btFracture into a fresh prefix and builds and runs tests/package/consumer against it.
+#   MODE=installed : install the current build tree (BUILD_DIR)
+#   MODE=rebuild   : configure, build and install a second tree of the whole project (SOURCE_DIR)
+#                    in the other Bullet precision, with tests, benchmarks and demos off
+# Other inputs: SOURCE_DIR, BUILD_DIR, WORK_DIR, GENERATOR, BUILD_TYPE, DOUBLE (ON/OFF: the
+# precision to install and expect), NATIVE, SANITIZE, JOBS.
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL 0)
+    string(REPLACE ";" " " command "${ARGN}")
+    message(FATAL_ERROR "failed (${code}): ${command}\n${out}\n${err}")
+  endif()
+  set(last_output "${out}" PARENT_SCOPE)
+endfunction()
+
+set(prefix "${WORK_DIR}/prefix")
+file(REMOVE_RECURSE "${prefix}" "${WORK_DIR}/consumer-build")
+
+set(sanitize_flags "")
+if(SANITIZE)
+  set(sanitize_flags "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
+endif()
+
+if(MODE STREQUAL "rebuild")
+  # The second tree persists in WORK_DIR, so a re-run only rebuilds what changed.
+  set(tree "${WORK_DIR}/project-build")
+  run(${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${tree}" -G "${GENERATOR}" -DCMAKE_BUILD_TYPE=${BUILD_TYPE}
+      -DBTFRACTURE_BULLET_DOUBLE=${DOUBLE} -DBTFRACTURE_NATIVE=${NATIVE} -DBTFRACTURE_SANITIZE=${SANITIZE}
+      -DBTFRACTURE_BUILD_TESTS=OFF -DBTFRACTURE_BUILD_BENCH=OFF -DBTFRACTURE_BUILD_DEMOS=OFF)
+  run(${CMAKE_COMMAND} --build "${tree}" -j ${JOBS})
+  run(${CMAKE_COMMAND} --install "${tree}" --prefix "${prefix}")
+else()
+  run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
+endif()
+
+run(${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/package/consumer" -B "${WORK_DIR}/consumer-build" -G "${GENERATOR}"
+    -DCMAKE_BUILD_TYPE=${BUILD_TYPE} "-DCMAKE_PREFIX_PATH=${prefix}" -DEXPECT_BULLET_DOUBLE=${DOUBLE} ${sanitize_flags})
+run(${CMAKE_COMMAND} --build "${WORK_DIR}/consumer-build")
+run("${WORK_DIR}/consumer-build/app")
+message(STATUS "${last_output}")
