@@ -9,7 +9,6 @@
 #include <btFracture/dynamics/HertzContact.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/core/MassProperties.h>
-#include <btFracture/dynamics/PrincipalAxes.h>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btCollisionConfiguration.h>

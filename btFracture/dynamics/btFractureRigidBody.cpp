@@ -5,7 +5,6 @@
 #include <btFracture/dynamics/ContactCurvature.h>
 #include <btFracture/dynamics/ConvexHullMesh.h>
 #include <btFracture/core/MassProperties.h>
-#include <btFracture/dynamics/PrincipalAxes.h>
 
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>

@@ -3,7 +3,6 @@
 #include <btFracture/dynamics/ConvexHullMesh.h>
 #include <btFracture/geometry/ConvexPenetration.h>
 #include <btFracture/core/MassProperties.h>
-#include <btFracture/dynamics/PrincipalAxes.h>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
