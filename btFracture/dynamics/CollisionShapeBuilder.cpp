@@ -131,6 +131,12 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
     const double volume = computeMassProperties(mesh).volume;
     const double margin = options.margin > 0.0 ? options.margin : std::min(0.04, 0.02 * std::cbrt(volume));
 
+    if (kind == CollisionShapeKind::ConvexDecomposition &&
+        mesh.triangles.size() > static_cast<std::size_t>(std::max(0, options.decompositionTriangleLimit))) {
+        logf(LogLevel::Debug, name, ": ", mesh.triangles.size(), " triangles exceed the decomposition limit of ",
+             options.decompositionTriangleLimit, "; using a GImpact mesh shape");
+        kind = CollisionShapeKind::GImpactMesh;
+    }
     auto storage = std::make_unique<CollisionShapeStorage>();
     storage->kind_ = kind;
     storage->margin_ = margin;

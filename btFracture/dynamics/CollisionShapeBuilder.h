@@ -7,14 +7,19 @@
 //    (btConvexHullComputer shrink) so that hull + margin matches the mesh instead of bulging out
 //    by one margin: two fragments that share a cut face then touch instead of overlapping.
 //  - ConvexDecomposition: btCompoundShape of shrunk convex hulls of HACD clusters (Bullet's
-//    libHACD). The default for non-convex bodies and fragments: it uses Bullet's convex-convex
-//    GJK/EPA and persistent manifolds, so resting contact is as stable as for any convex body,
-//    and it needs no extra collision algorithm. HACD costs time once per fragment.
-//  - GImpactMesh: btGImpactMeshShape over the triangles (what FractureRB used): no decomposition
-//    cost, exact concave surface, but mesh-mesh contacts are slow and jittery, and the dispatcher
+//    libHACD). Meshes above options.decompositionTriangleLimit get a GImpactMesh instead.
+//  - GImpactMesh: btGImpactMeshShape over the triangles (what FractureRB used); the dispatcher
 //    needs btGImpactCollisionAlgorithm (btFractureDynamicsWorld registers it).
-//  bench/bench_fragment_shapes measures the two mesh kinds (shape build time, step time, resting
-//  jitter); see its header for the numbers behind this choice.
+//
+// Choice (bench/bench_fragment_shapes, tori as non-convex fragments, this machine, 2 shared
+// cores): a pile of 24 tori (576 triangles each) steps in 4.0 ms with HACD compounds against 10.4
+// ms with GImpact; both rest equally still (mean speed 3.3 vs 3.6 mm/s) and none tunnels. HACD
+// costs time once per shape and grows fast with the mesh: 0.28 s at 576 triangles, 1.2 s at
+// 1024, 3.5-5.4 s at 2304; GImpact builds in under 3 ms. A compound saves about 0.27 ms per body
+// and step, so it pays for itself after ~1000 steps at 576 triangles but would stall a fracture
+// event for seconds on a full collision mesh. Hence: ConvexDecomposition by default for meshes up
+// to 600 triangles (the small fragments of §5.2 (b), which never break again and live long),
+// GImpactMesh above; either can be forced (kind GImpactMesh, or a larger triangle limit).
 #include <btFracture/core/TriangleMesh.h>
 #include <btFracture/geometry/ConvexPenetration.h>
 
@@ -35,6 +40,8 @@ struct CollisionShapeOptions {
     // bounding-box diagonal, and the largest number of hull vertices per piece.
     double decompositionConcavity = 0.02;
     int decompositionMaxHullVertices = 64;
+    // ConvexDecomposition falls back to GImpactMesh for meshes with more triangles than this.
+    int decompositionTriangleLimit = 600;
 };
 
 // Owns a Bullet collision shape and everything it references (child shapes, vertex arrays).
@@ -46,7 +53,7 @@ public:
     CollisionShapeStorage& operator=(const CollisionShapeStorage&) = delete;
 
     btCollisionShape* shape() const { return shape_; }
-    CollisionShapeKind kind() const { return kind_; }
+    CollisionShapeKind kind() const { return kind_; }  // the kind actually built
     double margin() const { return margin_; }
     // The convex pieces as collision sees them (shrunk hull points + margin), body frame; empty
     // for GImpactMesh. Used to separate overlapping fragments with libccd.

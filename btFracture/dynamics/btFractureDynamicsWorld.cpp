@@ -233,6 +233,7 @@ void btFractureDynamicsWorld::collectTriggeredBodies() {
     const int manifolds = m_dispatcher1->getNumManifolds();
     for (int m = 0; m < manifolds; ++m) {
         const btPersistentManifold* manifold = m_dispatcher1->getManifoldByIndexInternal(m);
+        if (manifold->getNumContacts() == 0) continue;  // most broadphase pairs: no body touched
         btFractureRigidBody* bodies[2] = {fracturable(manifold->getBody0()), fracturable(manifold->getBody1())};
         if (!bodies[0] && !bodies[1]) continue;
         if (!wasSolved(*manifold)) continue;

@@ -43,6 +43,9 @@ TEST(CollisionShapes, DecompositionCoversANonConvexMesh) {
     const double exact = computeMassProperties(l).volume;
     EXPECT_LT(volume, 1.1 * exact);
     EXPECT_GT(volume, 0.6 * exact);  // shrunk by the margin
+    // Above the triangle limit the decomposition falls back to GImpact (HACD would take seconds).
+    const TriangleMesh ring = test::torus(0.1, 0.03, 32, 12);  // 768 triangles
+    EXPECT_EQ(buildCollisionShape(ring, CollisionShapeKind::ConvexDecomposition)->kind(), CollisionShapeKind::GImpactMesh);
     const auto gimpact = buildCollisionShape(l, CollisionShapeKind::GImpactMesh);
     EXPECT_TRUE(gimpact->convexPieces().empty());
     EXPECT_EQ(gimpact->shape()->getShapeType(), GIMPACT_SHAPE_PROXYTYPE);
