@@ -15,6 +15,11 @@ struct BodyContact {
     double approachSpeed = 0.0;  // normal approach speed before the solve [m/s] (unfloored)
     double duration = 0.0;       // Hertz contact duration t_c [s] (HertzContact.h), > 0
     double peakForce = 0.0;      // Hertz peak force F_max [N] at the floored approach speed
+    // The Hertz effective quantities of the pair (HertzContact.h): E* [Pa], R* [m] (capped at the
+    // body's characteristic length), m* [kg].
+    double effectiveModulus = 0.0;
+    double effectiveRadius = 0.0;
+    double effectiveMass = 0.0;
 };
 
 }  // namespace btfracture

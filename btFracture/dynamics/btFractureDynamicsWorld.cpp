@@ -133,6 +133,69 @@ private:
     int saved_[4] = {0, 0, 0, 0};
 };
 
+Eigen::Matrix3d worldInertia(const btRigidBody& body) {
+    const Eigen::Matrix3d R = toEigen(body.getWorldTransform().getBasis());
+    return R * toEigen(body.getInvInertiaDiagLocal()).cwiseInverse().asDiagonal() * R.transpose();
+}
+
+// Moves the fragments by their separation pushes and gives them the parent's pre-step rigid
+// motion. Without pushes: v_f = v + w x (x_f - x_parent), w_f = w. With pushes the fragments'
+// common centre moves to X' and a rigid motion about the old centre would change the angular
+// momentum at first order in the push; so the common angular velocity becomes w' = I'^-1 I_0 w
+// (I_0, I': the fragments' inertia about their common centre before and after the pushes) and
+// v_f = V + w' x (x_f - X'), V the velocity of the old common centre. Linear momentum and angular
+// momentum about the centre of mass are then exactly those the unpushed fragments carried.
+void assignParentMotion(const std::vector<btFractureRigidBody*>& fragments, const std::vector<Eigen::Vector3d>& pushes,
+                        const btRigidBody& parent) {
+    const Eigen::Vector3d parentOrigin = toEigen(parent.getWorldTransform().getOrigin());
+    const Eigen::Vector3d v = toEigen(parent.getLinearVelocity());
+    const Eigen::Vector3d w = toEigen(parent.getAngularVelocity());
+    const std::size_t n = fragments.size();
+    std::vector<double> mass(n);
+    std::vector<Eigen::Vector3d> before(n), after(n);
+    double total = 0.0;
+    Eigen::Vector3d centreBefore = Eigen::Vector3d::Zero(), centreAfter = Eigen::Vector3d::Zero();
+    bool pushed = false;
+    for (std::size_t k = 0; k < n; ++k) {
+        mass[k] = 1.0 / double(fragments[k]->getInvMass());
+        before[k] = toEigen(fragments[k]->getWorldTransform().getOrigin());
+        after[k] = before[k] + pushes[k];
+        pushed = pushed || pushes[k] != Eigen::Vector3d::Zero();
+        total += mass[k];
+        centreBefore += mass[k] * before[k];
+        centreAfter += mass[k] * after[k];
+    }
+    centreBefore /= total;
+    centreAfter /= total;
+    const Eigen::Vector3d V = v + w.cross(centreBefore - parentOrigin);
+    Eigen::Vector3d spin = w;
+    if (pushed) {
+        Eigen::Matrix3d inertiaBefore = Eigen::Matrix3d::Zero(), inertiaAfter = Eigen::Matrix3d::Zero();
+        for (std::size_t k = 0; k < n; ++k) {
+            const Eigen::Matrix3d own = worldInertia(*fragments[k]);
+            const Eigen::Vector3d r0 = before[k] - centreBefore, r1 = after[k] - centreAfter;
+            inertiaBefore += own + mass[k] * (r0.squaredNorm() * Eigen::Matrix3d::Identity() - r0 * r0.transpose());
+            inertiaAfter += own + mass[k] * (r1.squaredNorm() * Eigen::Matrix3d::Identity() - r1 * r1.transpose());
+        }
+        spin = inertiaAfter.ldlt().solve(inertiaBefore * w);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        btFractureRigidBody& f = *fragments[k];
+        btTransform t = f.getWorldTransform();
+        const Eigen::Vector3d centre = pushed ? after[k] : before[k];
+        const Eigen::Vector3d velocity = pushed ? Eigen::Vector3d(V + spin.cross(after[k] - centreAfter))
+                                                : Eigen::Vector3d(v + w.cross(before[k] - parentOrigin));
+        t.setOrigin(toBullet(centre));
+        f.setWorldTransform(t);
+        f.setInterpolationWorldTransform(t);
+        f.setLinearVelocity(toBullet(velocity));
+        f.setAngularVelocity(toBullet(spin));
+        f.setInterpolationLinearVelocity(toBullet(velocity));
+        f.setInterpolationAngularVelocity(toBullet(spin));
+        f.updateInertiaTensor();
+    }
+}
+
 }  // namespace
 
 struct btFractureDynamicsWorld::Event {
@@ -318,6 +381,9 @@ bool btFractureDynamicsWorld::buildContacts(btFractureRigidBody& body, std::vect
             contact.approachSpeed = approach;
             contact.duration = hertz.contactDuration;
             contact.peakForce = hertz.peakForce;
+            contact.effectiveModulus = hertz.effectiveModulus;
+            contact.effectiveRadius = hertz.effectiveRadius;
+            contact.effectiveMass = hertz.effectiveMass;
             contacts.push_back(contact);
         }
     }
@@ -370,7 +436,7 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
         spawned.insert(spawned.end(), event.fragments.begin(), event.fragments.end());
     }
 
-    // Push overlapping fragments apart, then give each the parent's rigid motion at its new centre.
+    // Push overlapping fragments apart, then give them the parent's rigid motion (momentum-exact).
     std::vector<SeparationBody> separation;
     for (btFractureRigidBody* f : spawned) {
         SeparationBody s;
@@ -386,21 +452,11 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
     const SeparationResult pushes = separateOverlaps(separation);
     std::size_t index = 0;
     for (Event& event : events) {
-        const btTransform& parentTransform = event.parent->getWorldTransform();
-        const btVector3 v = event.parent->getLinearVelocity();
-        const btVector3 w = event.parent->getAngularVelocity();
-        for (btFractureRigidBody* f : event.fragments) {
-            btTransform t = f->getWorldTransform();
-            t.setOrigin(t.getOrigin() + toBullet(pushes.pushes[index++]));
-            f->setWorldTransform(t);
-            f->setInterpolationWorldTransform(t);
-            const btVector3 velocity = v + w.cross(t.getOrigin() - parentTransform.getOrigin());
-            f->setLinearVelocity(velocity);
-            f->setAngularVelocity(w);
-            f->setInterpolationLinearVelocity(velocity);
-            f->setInterpolationAngularVelocity(w);
-            f->updateInertiaTensor();
-        }
+        const std::vector<Eigen::Vector3d> eventPushes(pushes.pushes.begin() + static_cast<std::ptrdiff_t>(index),
+                                                       pushes.pushes.begin() +
+                                                           static_cast<std::ptrdiff_t>(index + event.fragments.size()));
+        index += event.fragments.size();
+        assignParentMotion(event.fragments, eventPushes, *event.parent);
         event.info.maxSeparationPush = pushes.largestPush;
     }
 

@@ -25,6 +25,10 @@ struct SceneOptions {
     int maxRefractureDepth = 2;
     bool withEngine = true;
     Eigen::Vector3d slabHalfExtents = Eigen::Vector3d(0.2, 0.025, 0.2);  // [m]
+    // Free flight: no gravity, the slab lifted 0.5 m off the ground, moving and spinning.
+    bool freeFlight = false;
+    Eigen::Vector3d slabVelocity = Eigen::Vector3d::Zero();         // [m/s]
+    Eigen::Vector3d slabAngularVelocity = Eigen::Vector3d::Zero();  // [rad/s]
 };
 
 // Momentum, energy and mass of the dynamic rigid bodies in a world (double precision).
@@ -65,7 +69,8 @@ class Scene {
 public:
     explicit Scene(const SceneOptions& options = {}) {
         world = std::make_unique<btFractureDynamicsWorld>(&dispatcher, &broadphase, &solver, &config);
-        world->setGravity(btVector3(0, btScalar(-9.81), 0));
+        world->setGravity(btVector3(0, options.freeFlight ? btScalar(0) : btScalar(-9.81), 0));
+        const double lift = options.freeFlight ? 0.5 : 0.0;
         if (options.withEngine) world->setFractureEngine(std::make_unique<PlaneSplitFractureEngine>());
 
         btTransform t;
@@ -80,8 +85,12 @@ public:
         settings.maxRefractureDepth = options.maxRefractureDepth;
         const btBoxShape slabShape(btVector3(btScalar(options.slabHalfExtents.x()), btScalar(options.slabHalfExtents.y()),
                                              btScalar(options.slabHalfExtents.z())));
-        t.setOrigin(btVector3(0, btScalar(options.slabHalfExtents.y()), 0));
+        t.setOrigin(btVector3(0, btScalar(options.slabHalfExtents.y() + lift), 0));
         slab = std::make_unique<btFractureRigidBody>(Material::glass(), slabShape, settings, t);
+        slab->setLinearVelocity(btVector3(btScalar(options.slabVelocity.x()), btScalar(options.slabVelocity.y()),
+                                          btScalar(options.slabVelocity.z())));
+        slab->setAngularVelocity(btVector3(btScalar(options.slabAngularVelocity.x()), btScalar(options.slabAngularVelocity.y()),
+                                           btScalar(options.slabAngularVelocity.z())));
         slab->setFriction(btScalar(0.6));
         world->addRigidBody(slab.get());
 
@@ -90,7 +99,8 @@ public:
         btVector3 inertia;
         ballShape.calculateLocalInertia(mass, inertia);
         ball = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(mass, nullptr, &ballShape, inertia));
-        t.setOrigin(btVector3(btScalar(options.ballX), btScalar(2.0 * options.slabHalfExtents.y() + 0.05 + 0.03), btScalar(options.ballZ)));
+        t.setOrigin(btVector3(btScalar(options.ballX), btScalar(2.0 * options.slabHalfExtents.y() + lift + 0.05 + 0.03),
+                              btScalar(options.ballZ)));
         ball->setWorldTransform(t);
         ball->setLinearVelocity(btVector3(0, btScalar(-options.ballSpeed), 0));
         world->addRigidBody(ball.get());

@@ -3,6 +3,7 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/dynamics/HertzContact.h>
 
 #include <gtest/gtest.h>
 
@@ -61,6 +62,92 @@ TEST(FractureWorld, BallBreaksSlabAboveThreshold) {
     }
     EXPECT_GT(listener.lastInfo.impulseSum, 10.0);
     EXPECT_GE(listener.lastInfo.contacts, 1);
+    // The parent's contact manifolds left with it.
+    for (int m = 0; m < scene.dispatcher.getNumManifolds(); ++m) {
+        const btPersistentManifold* manifold = scene.dispatcher.getManifoldByIndexInternal(m);
+        EXPECT_NE(manifold->getBody0(), scene.slab.get());
+        EXPECT_NE(manifold->getBody1(), scene.slab.get());
+    }
+}
+
+TEST(FractureWorld, ContactsReachTheEngineInTheBodyFrame) {
+    // An engine that records and breaks nothing.
+    struct Recorder : FractureEngine {
+        std::vector<BodyContact> contacts;
+        double mass = 0.0;
+        FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>& c, FractureStatistics&) override {
+            if (contacts.empty()) {
+                contacts = c;
+                mass = 1.0 / double(body.getInvMass());
+            }
+            return {};
+        }
+    };
+    Scene scene;
+    auto recorder = std::make_unique<Recorder>();
+    Recorder* rec = recorder.get();
+    scene.world->setFractureEngine(std::move(recorder));
+    const btTransform slabPose = scene.slab->getWorldTransform();
+    for (int i = 0; i < 10 && rec->contacts.empty(); ++i) scene.step();
+    ASSERT_FALSE(rec->contacts.empty());
+    EXPECT_EQ(scene.world->fractureStatistics().fractureEvents, 0u);
+    EXPECT_TRUE(scene.slab->isInWorld());
+    // The hardest contact is the ball's: on the top face under the ball, pointing down into the slab.
+    const BodyContact* ball = &rec->contacts.front();
+    for (const BodyContact& c : rec->contacts)
+        if (c.approachSpeed > ball->approachSpeed) ball = &c;
+    const Eigen::Vector3d worldPoint = eig(slabPose * btVector3(btScalar(ball->point.x()), btScalar(ball->point.y()), btScalar(ball->point.z())));
+    EXPECT_NEAR(worldPoint.x(), 0.05, 1e-3);
+    EXPECT_NEAR(worldPoint.y(), 0.05, 2e-3);
+    EXPECT_NEAR(worldPoint.z(), 0.03, 1e-3);
+    const Eigen::Vector3d worldDirection = eig(slabPose.getBasis() * btVector3(btScalar(ball->direction.x()), btScalar(ball->direction.y()), btScalar(ball->direction.z())));
+    EXPECT_LT((worldDirection - Eigen::Vector3d(0, -1, 0)).norm(), 1e-3);
+    EXPECT_NEAR(ball->approachSpeed, 10.0, 0.05);  // 10 m/s plus at most one step of gravity
+    EXPECT_GT(ball->impulse, 10.0);
+    // Hertz: steel ball (r 5 cm) on glass, flat-ish face capped at the slab size.
+    const double ballMass = 1.0 / double(scene.ball->getInvMass());
+    const HertzImpact h = hertzImpact(HertzBody{70e9, 0.22, 1.0 / rec->mass, scene.slab->meanCurvatureAt(ball->point)},
+                                      HertzBody{210e9, 0.3, 1.0 / ballMass, 1.0 / 0.05}, ball->approachSpeed,
+                                      scene.slab->characteristicLength());
+    EXPECT_NEAR(ball->duration, h.contactDuration, 1e-12);
+    EXPECT_NEAR(ball->effectiveMass, 1.0 / (1.0 / rec->mass + 1.0 / ballMass), 1e-6);
+    EXPECT_GT(ball->duration, 1e-6);
+    EXPECT_LT(ball->duration, 1e-3);
+    // Resting contacts with the ground point up into the slab and have the floored speed's duration.
+    int groundContacts = 0;
+    for (const BodyContact& c : rec->contacts) {
+        const Eigen::Vector3d d = eig(slabPose.getBasis() * btVector3(btScalar(c.direction.x()), btScalar(c.direction.y()), btScalar(c.direction.z())));
+        if (d.y() > 0.99) ++groundContacts;
+    }
+    EXPECT_GE(groundContacts, 1);
+}
+
+TEST(FractureWorld, ReplayKeepsBystandersAsleep) {
+    Scene scene;
+    // A box far away that has fallen asleep on the ground.
+    btBoxShape boxShape(btVector3(btScalar(0.1), btScalar(0.1), btScalar(0.1)));
+    btVector3 inertia;
+    boxShape.calculateLocalInertia(1, inertia);
+    btRigidBody box(btRigidBody::btRigidBodyConstructionInfo(1, nullptr, &boxShape, inertia));
+    box.getWorldTransform().setOrigin(btVector3(2, btScalar(0.1), 2));
+    scene.world->addRigidBody(&box);
+    scene.world->setFractureEnabled(false);
+    scene.ball->setLinearVelocity(btVector3(0, 0, 0));
+    scene.ball->getWorldTransform().setOrigin(btVector3(-2, 1, -2));
+    scene.step(600);
+    ASSERT_EQ(box.getActivationState(), ISLAND_SLEEPING);
+    const btTransform asleep = box.getWorldTransform();
+    // Now throw the ball at the slab and break it.
+    scene.world->setFractureEnabled(true);
+    scene.ball->activate(true);
+    scene.ball->getWorldTransform().setOrigin(btVector3(btScalar(0.05), btScalar(0.13), btScalar(0.03)));
+    scene.ball->setLinearVelocity(btVector3(0, -10, 0));
+    scene.slab->activate(true);
+    scene.step(5);
+    EXPECT_EQ(scene.world->fractureStatistics().fractureEvents, 1u);
+    EXPECT_EQ(box.getActivationState(), ISLAND_SLEEPING);
+    EXPECT_EQ(std::memcmp(&asleep.getOrigin(), &box.getWorldTransform().getOrigin(), sizeof(btVector3)), 0);
+    scene.world->removeRigidBody(&box);
 }
 
 TEST(FractureWorld, BelowThresholdNothingIsCalledOrBuilt) {
@@ -89,9 +176,17 @@ TEST(FractureWorld, BelowThresholdNothingIsCalledOrBuilt) {
 }
 
 TEST(FractureWorld, SwapConservesMassMomentumAndDoesNotPop) {
-    for (const double ballX : {0.05, -0.12}) {
+    // Resting on the ground (hit at two places), and in free flight, moving and spinning, so that
+    // the fragments' v + w x r and rotated inertia matter.
+    for (int variant = 0; variant < 3; ++variant) {
         SceneOptions options;
-        options.ballX = ballX;
+        options.ballX = variant == 1 ? -0.12 : 0.05;
+        if (variant == 2) {
+            options.freeFlight = true;
+            options.slabVelocity = Eigen::Vector3d(0.3, 0.5, -0.2);
+            options.slabAngularVelocity = Eigen::Vector3d(0.4, 2.0, -0.7);
+        }
+        const double ballX = options.ballX;
         Scene scene(options);
         SwapProbe listener(*scene.world);
         scene.world->addFractureListener(&listener);
@@ -111,14 +206,14 @@ TEST(FractureWorld, SwapConservesMassMomentumAndDoesNotPop) {
                 << swap.angular.transpose() << " vs " << before.angular.transpose();
             // No popping: the replayed step adds no more than 1 % kinetic energy.
             EXPECT_LE(after.kinetic, 1.01 * before.kinetic) << after.kinetic << " vs " << before.kinetic;
-            std::printf("swap at ball x = %.2f: mass %.2e, momentum %.2e, angular momentum %.2e (relative "
+            std::printf("swap (variant %d, ball x = %.2f): mass %.2e, momentum %.2e, angular momentum %.2e (relative "
                         "differences); kinetic energy after replay / before = %.4f; largest push %.2e m\n",
-                        ballX, std::abs(swap.mass - before.mass) / before.mass, relative(swap.linear, before.linear, pScale),
+                        variant, ballX, std::abs(swap.mass - before.mass) / before.mass, relative(swap.linear, before.linear, pScale),
                         relative(swap.angular, before.angular, lScale), after.kinetic / before.kinetic,
                         listener.lastInfo.maxSeparationPush);
             EXPECT_LT(listener.lastInfo.maxSeparationPush, 1e-3);
         }
-        EXPECT_EQ(listener.events, 1) << "ball at x = " << ballX;
+        EXPECT_EQ(listener.events, 1) << "variant " << variant;
     }
 }
 
