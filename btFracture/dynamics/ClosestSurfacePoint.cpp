@@ -7,8 +7,8 @@
 
 namespace btfracture {
 
-Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                       const Eigen::Vector3d& c) {
+Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                       const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
     const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
     const double d1 = ab.dot(ap), d2 = ac.dot(ap);
     if (d1 <= 0.0 && d2 <= 0.0) return a;
@@ -52,7 +52,8 @@ ClosestSurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Eigen::V
     double bestDistance2 = std::numeric_limits<double>::infinity();
     for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
         const auto& t = mesh.triangles[e];
-        const Eigen::Vector3d q = closestPointOnTriangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+        const Eigen::Vector3d q =
+            closestPointOnTriangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
         const double d2 = (q - p).squaredNorm();
         if (d2 < bestDistance2) {
             bestDistance2 = d2;
@@ -62,7 +63,8 @@ ClosestSurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Eigen::V
     }
     if (best.triangle < 0) return best;
     const auto& t = mesh.triangles[best.triangle];
-    best.barycentric = barycentricOf(best.point, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+    best.barycentric =
+        barycentricOf(best.point, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
     best.distance = std::sqrt(bestDistance2);
     return best;
 }

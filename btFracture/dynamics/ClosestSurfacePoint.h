@@ -15,8 +15,8 @@ struct ClosestSurfacePoint {
 };
 
 // Closest point on triangle (a, b, c) to p (Voronoi regions of corners, edges, face).
-Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                       const Eigen::Vector3d& c);
+Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                       const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
 // Expects valid indices (see inspectMesh).
 ClosestSurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Eigen::Vector3d& p);

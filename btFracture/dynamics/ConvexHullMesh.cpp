@@ -28,7 +28,8 @@ TriangleMesh convexHullMesh(const std::vector<Eigen::Vector3d>& points, const st
     TriangleMesh mesh;
     mesh.name = name;
     // The hull's corners are input points: take them in double precision.
-    for (int i = 0; i < hull.vertices.size(); ++i) mesh.vertices.push_back(points[hull.original_vertex_index[i]]);
+    for (int i = 0; i < hull.vertices.size(); ++i)
+        mesh.vertices.push_back(points[hull.original_vertex_index[i]]);
     for (int f = 0; f < hull.faces.size(); ++f) {
         const btConvexHullComputer::Edge* start = &hull.edges[hull.faces[f]];
         std::vector<int> polygon;
@@ -63,9 +64,11 @@ TriangleMesh boxMesh(const Eigen::Vector3d& h, const std::string& name) {
     TriangleMesh mesh;
     mesh.name = name;
     for (int i = 0; i < 8; ++i)
-        mesh.vertices.emplace_back((i & 1) ? h.x() : -h.x(), (i & 2) ? h.y() : -h.y(), (i & 4) ? h.z() : -h.z());
+        mesh.vertices.emplace_back((i & 1) ? h.x() : -h.x(), (i & 2) ? h.y() : -h.y(),
+                                   (i & 4) ? h.z() : -h.z());
     // Each face as a quad (corner bits), counter-clockwise seen from outside.
-    const int quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+    const int quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
     for (const auto& q : quads) {
         mesh.triangles.push_back({q[0], q[1], q[2]});
         mesh.triangles.push_back({q[0], q[2], q[3]});
