@@ -59,8 +59,16 @@ struct FragmentSpec {
     std::unique_ptr<FractureState> carriedState;
 };
 
+// Where the engine's time went (wall clock [s]); reported to listeners in FractureEventInfo.
+struct EngineTimings {
+    double bem = 0.0;       // building and solving the elastic system
+    double fracture = 0.0;  // SIFs, initiation, crack propagation
+    double geometry = 0.0;  // level-set cuts, segmentation, fragment meshes and mass properties
+};
+
 struct FractureOutcome {
     std::vector<FragmentSpec> fragments;  // empty: nothing broke, the step stands as it is
+    EngineTimings timings;                // optional
 };
 
 class FractureEngine {

@@ -1,6 +1,8 @@
 #pragma once
 // Lets an application hear about fracture events (register with
 // btFractureDynamicsWorld::addFractureListener).
+#include <btFracture/dynamics/FractureEngine.h>
+
 #include <cstdint>
 #include <vector>
 
@@ -13,6 +15,7 @@ struct FractureEventInfo {
     int contacts = 0;                // contacts handed to the engine
     double impulseSum = 0.0;         // summed normal impulse on the parent [N s]
     double engineSeconds = 0.0;      // wall time inside FractureEngine::fracture()
+    EngineTimings engineTimings;     // the engine's own split of that time, if it reports one
     double swapSeconds = 0.0;        // wall time for restoring, swapping and separating (whole step)
     double maxSeparationPush = 0.0;  // largest overlap push applied to a new fragment [m]
 };

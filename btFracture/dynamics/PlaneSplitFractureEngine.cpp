@@ -3,6 +3,7 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
+#include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/ConvexHullMesh.h>
 #include <btFracture/dynamics/TractionBalance.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
@@ -137,7 +138,9 @@ FractureOutcome PlaneSplitFractureEngine::fracture(btFractureRigidBody& body,
                                                    const std::vector<BodyContact>& contacts,
                                                    FractureStatistics& stats) {
     if (contacts.empty()) return {};
+    Timer timer;
     ensureState(body, stats);
+    const double stateSeconds = timer.seconds();
     // The hardest impact: resting contacts (floored approach speed) have tiny Hertz peak forces.
     const BodyContact* impact = &contacts.front();
     for (const BodyContact& c : contacts)
@@ -145,7 +148,11 @@ FractureOutcome PlaneSplitFractureEngine::fracture(btFractureRigidBody& body,
     const Eigen::Vector3d direction = impact->direction.normalized();
     int axis = 0;
     direction.cwiseAbs().minCoeff(&axis);
-    return split(body, impact->point, direction.cross(Eigen::Vector3d::Unit(axis)));
+    timer.restart();
+    FractureOutcome outcome = split(body, impact->point, direction.cross(Eigen::Vector3d::Unit(axis)));
+    outcome.timings.bem = stateSeconds;  // the stand-in's "BEM": building its balancer
+    outcome.timings.geometry = timer.seconds();
+    return outcome;
 }
 
 FractureOutcome PlaneSplitFractureEngine::split(const btFractureRigidBody& body, const Eigen::Vector3d& point,

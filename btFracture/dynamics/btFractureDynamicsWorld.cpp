@@ -415,6 +415,7 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             Timer timer;
             event.outcome = engine_->fracture(*body, contacts, stats_);
             event.info.engineSeconds = timer.seconds();
+            event.info.engineTimings = event.outcome.timings;
             for (std::size_t k = 0; k < event.outcome.fragments.size(); ++k)
                 validateSpec(event.outcome.fragments[k], body->name() + ": fragment " + std::to_string(k));
         } catch (const Error& error) {
