@@ -55,7 +55,8 @@ class btFractureRigidBody;
 class btFractureDynamicsWorld : public btDiscreteDynamicsWorld {
 public:
     btFractureDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* pairCache,
-                            btConstraintSolver* constraintSolver, btCollisionConfiguration* collisionConfiguration);
+                            btConstraintSolver* constraintSolver,
+                            btCollisionConfiguration* collisionConfiguration);
     ~btFractureDynamicsWorld() override;
 
     // The world owns its engine. nullptr (the default) means fracture never happens (logged once).
@@ -108,8 +109,8 @@ private:
     int fractureBodies_ = 0;  // btFractureRigidBody instances currently in the world
 
     RigidBodySnapshot snapshot_;
-    std::vector<btFractureRigidBody*> touched_;    // fracturable bodies with contacts this step
-    std::vector<btFractureRigidBody*> triggered_;  // ... whose impulse sum reached the threshold
+    std::vector<btFractureRigidBody*> touched_;                // fracturable bodies with contacts this step
+    std::vector<btFractureRigidBody*> triggered_;              // ... whose impulse sum reached the threshold
     std::vector<std::unique_ptr<btFractureRigidBody>> owned_;  // fragments in the world, creation order
 };
 
