@@ -2,8 +2,10 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/SelfIntersection.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/geometry/ClosestPointTree.h>
+#include <btFracture/geometry/EdgeLengthField.h>
 #include <btFracture/geometry/HalfEdgeMesh.h>
 #include <btFracture/geometry/IntersectionSmoothing.h>
 #include <btFracture/geometry/MeshQuality.h>
@@ -18,6 +20,7 @@
 #include <queue>
 #include <sstream>
 #include <utility>
+#include <vector>
 
 namespace btfracture {
 namespace {
@@ -31,6 +34,11 @@ constexpr double kMinNormalCosine = 0.0;      // isotropic edits never turn a fa
 // deviation); without it, thin tips such as the bunny's ears erode a little every iteration.
 constexpr double kMaxDeviation = 0.1;
 constexpr int kMaxIntersectionRounds = 20;
+// Where intersections survive smoothing, the target length is halved within this many target
+// lengths of them (at most kMaxRefinements times) and kRefinementIterations iterations follow.
+constexpr double kRefinementRadius = 2.0;
+constexpr int kMaxRefinements = 3;
+constexpr int kRefinementIterations = 5;
 
 double surfaceArea(const TriangleMesh& mesh) {
     double area = 0.0;
@@ -41,14 +49,16 @@ double surfaceArea(const TriangleMesh& mesh) {
     return area;
 }
 
-void splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double maxLength) {
+void splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const EdgeLengthField& field) {
     // Longest edge first: its new edges are then at most sqrt(3)/2 as long as it was (median
     // of a triangle whose longest edge is split), so this ends even among degenerate triangles.
     std::priority_queue<std::pair<double, int>> queue;
     auto push = [&](int h) {
         if (mesh.twin(h) < h) h = mesh.twin(h);
         const double length = mesh.edgeLength(h);
-        if (length > maxLength) queue.emplace(length, h);
+        const Eigen::Vector3d midpoint =
+            0.5 * (mesh.position(mesh.origin(h)) + mesh.position(mesh.target(h)));
+        if (length > kSplitAbove * field.at(midpoint)) queue.emplace(length, h);
     };
     for (int h = 0; h < mesh.halfedgeSlots(); ++h)
         if (mesh.halfedgeAlive(h) && h < mesh.twin(h)) push(h);
@@ -70,14 +80,16 @@ void splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double 
     }
 }
 
-void collapseShortEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double minLength,
-                        double maxLength, double maxDeviation) {
+void collapseShortEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const EdgeLengthField& field) {
     constexpr int maxSweeps = 10;
-    const CollapseLimits limits{maxLength, kMinNormalCosine, maxDeviation};
     for (int sweep = 0; sweep < maxSweeps; ++sweep) {
         int collapses = 0;
         for (int h = 0; h < mesh.halfedgeSlots(); ++h) {
-            if (!mesh.halfedgeAlive(h) || mesh.twin(h) < h || mesh.edgeLength(h) >= minLength) continue;
+            if (!mesh.halfedgeAlive(h) || mesh.twin(h) < h) continue;
+            const double target =
+                field.at(0.5 * (mesh.position(mesh.origin(h)) + mesh.position(mesh.target(h))));
+            if (mesh.edgeLength(h) >= kCollapseBelow * target) continue;
+            const CollapseLimits limits{kSplitAbove * target, kMinNormalCosine, kMaxDeviation * target};
             const CollapsePlan plan = planCollapse(mesh, surface, h, limits, CollapseGoal::KeepShape);
             if (!plan.valid) continue;
             mesh.collapseEdge(h, plan.position);
@@ -105,9 +117,9 @@ void flipTowardsRegularValence(HalfEdgeMesh& mesh) {
 
 // Moves every vertex part of the way to the area-weighted centroid of its triangles, within its
 // tangent plane, and projects it onto the surface; moves that would shift the surface by more
-// than maxDeviation (at tips) are left out.
+// than kMaxDeviation times the target length (at tips) are left out.
 void relaxTangentially(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double step,
-                       double maxDeviation) {
+                       const EdgeLengthField& field) {
     std::vector<Eigen::Vector3d> moved(mesh.vertexSlots(), Eigen::Vector3d::Zero());
     for (int v = 0; v < mesh.vertexSlots(); ++v) {
         if (!mesh.vertexAlive(v)) continue;
@@ -128,8 +140,42 @@ void relaxTangentially(HalfEdgeMesh& mesh, const ClosestPointTree& surface, doub
         moved[v] = projectOntoSurface(surface, p + step * shift, n);
     }
     for (int v = 0; v < mesh.vertexSlots(); ++v)
-        if (mesh.vertexAlive(v) && moveDeviation(mesh, v, moved[v]) <= maxDeviation)
+        if (mesh.vertexAlive(v) &&
+            moveDeviation(mesh, v, moved[v]) <= kMaxDeviation * field.at(mesh.position(v)))
             mesh.setPosition(v, moved[v]);
+}
+
+// One iteration of Botsch & Kobbelt's isotropic remeshing.
+void remeshIteration(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const EdgeLengthField& field,
+                     double smoothingStep) {
+    splitLongEdges(mesh, surface, field);
+    collapseShortEdges(mesh, surface, field);
+    flipTowardsRegularValence(mesh);
+    relaxTangentially(mesh, surface, smoothingStep, field);
+    mesh.compact();
+}
+
+// Steers the triangle count to the target: faces scale with 1 / L^2.
+void steerCount(const HalfEdgeMesh& mesh, EdgeLengthField& field, int targetTriangles) {
+    const double ratio = static_cast<double>(mesh.faceCount()) / targetTriangles;
+    field.setBase(field.base() * std::clamp(std::sqrt(ratio), 0.8, 1.25));
+}
+
+// Centres of the triangles that intersect others (mesh compacted: face f is triangle f).
+std::vector<Eigen::Vector3d> intersectingTriangleCentres(const HalfEdgeMesh& mesh) {
+    std::vector<int> faces;
+    for (const auto& [a, b] : findSelfIntersections(mesh.toTriangleMesh(""))) {
+        faces.push_back(a);
+        faces.push_back(b);
+    }
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    std::vector<Eigen::Vector3d> centres;
+    for (int f : faces) {
+        const auto tri = mesh.faceVertices(f);
+        centres.push_back((mesh.position(tri[0]) + mesh.position(tri[1]) + mesh.position(tri[2])) / 3.0);
+    }
+    return centres;
 }
 
 void requireValidArguments(const std::string& source, int targetTriangles, const RemeshOptions& options) {
@@ -164,35 +210,47 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
         throw Error(source + ": cannot remesh a surface of area " + std::to_string(area));
 
     // Edge length of equilateral triangles that tile the area with the target count.
-    double edgeLength = std::sqrt(4.0 * area / (std::sqrt(3.0) * targetTriangles));
+    EdgeLengthField field(std::sqrt(4.0 * area / (std::sqrt(3.0) * targetTriangles)));
     for (int iteration = 0; iteration < options.iterations; ++iteration) {
-        splitLongEdges(mesh, surface, kSplitAbove * edgeLength);
-        collapseShortEdges(mesh, surface, kCollapseBelow * edgeLength, kSplitAbove * edgeLength,
-                           kMaxDeviation * edgeLength);
-        flipTowardsRegularValence(mesh);
-        relaxTangentially(mesh, surface, options.smoothingStep, kMaxDeviation * edgeLength);
-        mesh.compact();
-        // Steer the count to the target (faces scale with 1 / L^2), except in the last iterations.
-        if (iteration + 2 < options.iterations) {
-            const double ratio = static_cast<double>(mesh.faceCount()) / targetTriangles;
-            edgeLength *= std::clamp(std::sqrt(ratio), 0.8, 1.25);
-        }
+        remeshIteration(mesh, surface, field, options.smoothingStep);
+        if (iteration + 2 < options.iterations) steerCount(mesh, field, targetTriangles);
     }
+    double edgeLength = field.base();
 
     const double minAngle = options.minAngleDegrees * M_PI / 180.0;
-    const QualityRepairResult repair =
-        repairSmallAngles(mesh, surface, minAngle, edgeLength, options.repairPasses);
-    const IntersectionSmoothingResult untangle =
-        smoothSelfIntersections(mesh, surface, minAngle, edgeLength, kMaxIntersectionRounds);
-    if (untangle.rounds > 0)
-        logf(LogLevel::Info, source, ": ", untangle.moves, " vertex moves and ", untangle.edits,
-             " flips or collapses in ", untangle.rounds, " rounds to separate self-intersecting triangles, ",
-             untangle.remainingPairs, " pairs left");
+    QualityRepairResult repair = repairSmallAngles(mesh, surface, minAngle, edgeLength, options.repairPasses);
+    // Self-intersections: smooth them apart; where that fails, the surface there is too close to
+    // itself for the edge length, so halve the target length around them and remesh again.
+    IntersectionSmoothingResult untangle;
+    for (int refinement = 0;; ++refinement) {
+        untangle = smoothSelfIntersections(mesh, surface, minAngle, edgeLength, kMaxIntersectionRounds);
+        if (untangle.rounds > 0)
+            logf(LogLevel::Info, source, ": ", untangle.moves, " vertex moves and ", untangle.edits,
+                 " flips or collapses in ", untangle.rounds,
+                 " rounds to separate self-intersecting triangles, ", untangle.remainingPairs, " pairs left");
+        if (untangle.remainingPairs == 0 || refinement == kMaxRefinements) break;
+        const std::vector<Eigen::Vector3d> centres = intersectingTriangleCentres(mesh);
+        std::vector<double> lengths;
+        for (const auto& c : centres) lengths.push_back(field.at(c));
+        for (std::size_t i = 0; i < centres.size(); ++i)
+            field.refine(centres[i], kRefinementRadius * lengths[i], 0.5 * lengths[i] / field.at(centres[i]));
+        logf(LogLevel::Info, source, ": target edge length halved around ", centres.size(),
+             " intersecting triangles");
+        for (int iteration = 0; iteration < kRefinementIterations; ++iteration) {
+            remeshIteration(mesh, surface, field, options.smoothingStep);
+            if (iteration + 2 < kRefinementIterations) steerCount(mesh, field, targetTriangles);
+        }
+        edgeLength = field.base();
+        const QualityRepairResult more =
+            repairSmallAngles(mesh, surface, minAngle, edgeLength, options.repairPasses);
+        repair.edits += more.edits;
+        repair.passes += more.passes;
+    }
     if (untangle.remainingPairs > 0)
         logf(LogLevel::Warning, source, ": BEM remesh at ", targetTriangles, " triangles still has ",
              untangle.remainingPairs,
              " pairs of intersecting triangles (parts of the input closer together than the edge length ",
-             edgeLength, "); a larger target resolves them");
+             edgeLength, " allows even after local refinement); a larger target resolves them");
     if (options.fitAcrossSurface) {
         const SurfaceFitResult fit = fitAcrossSurface(mesh, surface, minAngle, kMaxDeviation * edgeLength);
         logf(LogLevel::Info, source, ": vertices moved up to ", fit.largestOffset,

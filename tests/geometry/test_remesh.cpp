@@ -7,6 +7,7 @@
 #include <btFracture/core/Primitives.h>
 #include <btFracture/geometry/ClosestPointTree.h>
 #include <btFracture/geometry/HalfEdgeMesh.h>
+#include <btFracture/geometry/LevelSetBody.h>
 #include <btFracture/geometry/MeshQuality.h>
 #include <btFracture/geometry/Remesh.h>
 #include <btFracture/geometry/SurfaceDistance.h>
@@ -20,6 +21,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <tuple>
 
 using namespace btfracture;
 
@@ -135,6 +137,24 @@ TEST(Remesh, BoxAtThreeResolutions) {
     checkBemMesh(box, 500, {0.03, 0.03});
     checkBemMesh(box, 1000, {0.02, 0.02});
     checkBemMesh(box, 3000, {0.015, 0.01});
+}
+
+TEST(Remesh, FineLevelSetMeshes) {
+    // The BEM mesh of a fragment comes from a level-set surface with ~10^5 triangles. At 256
+    // voxels across, the armadillo's claws are closer together than the edge length of a
+    // 3,000-triangle mesh: the remesher refines there instead of leaving intersections.
+    for (const auto& [mesh, voxelsAcross, target] :
+         {std::tuple{&bunny(), 128, 1000}, std::tuple{&armadillo(), 256, 3000}}) {
+        Eigen::AlignedBox3d box;
+        for (const auto& v : mesh->vertices) box.extend(v);
+        TriangleMesh fine = LevelSetBody(*mesh, box.sizes().maxCoeff() / voxelsAcross).visualMesh();
+        fine.name = mesh->name + " level set";
+        EXPECT_GT(fine.triangles.size(), 90000u);
+        const TriangleMesh output = checkBemMesh(fine, target, {0.03, 0.01});
+        const double toOriginal = hausdorffDistance(*mesh, output) / bboxDiagonal(*mesh);
+        EXPECT_LT(toOriginal, 0.03);
+        std::printf("  (Hausdorff to the original mesh %.4f)\n", toOriginal);
+    }
 }
 
 TEST(Remesh, ThinTorusKeepsItsHandle) {
