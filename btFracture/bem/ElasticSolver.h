@@ -37,6 +37,7 @@ public:
 
     const SurfaceMesh& mesh() const { return mesh_; }
     const Material& material() const { return material_; }
+    const ElasticSolverSettings& settings() const { return settings_; }
 
     // Nodal displacements u (3n, [m], node-major) for P0 tractions q (3m, [Pa], triangle-major,
     // body frame). Throws if q carries net force or torque (see NetLoad).
