@@ -73,7 +73,7 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
     return out;
 }
 
-CrackSystem::CrackSystem(const ElasticSolver& solver) : solver_(solver) {
+CrackSystem::CrackSystem(const ElasticSolver& solver, CrackMesh& cracks) : solver_(solver), cracks_(cracks) {
     const int n3 = 3 * solver.mesh().nodeCount(), m3 = 3 * solver.mesh().triangleCount();
     C_.resize(n3, 0);
     H_.resize(n3, 0);

@@ -17,8 +17,9 @@ namespace btfracture {
 
 class CrackSystem {
 public:
-    // Borrows `solver`, which must outlive this object.
-    explicit CrackSystem(const ElasticSolver& solver);
+    // Borrows `solver` and `cracks`, which must outlive this object. Unknowns the crack mesh
+    // already has are assembled by the first update().
+    CrackSystem(const ElasticSolver& solver, CrackMesh& cracks);
 
     CrackMesh& cracks() { return cracks_; }
     const CrackMesh& cracks() const { return cracks_; }
@@ -46,7 +47,7 @@ public:
 
 private:
     const ElasticSolver& solver_;
-    CrackMesh cracks_;
+    CrackMesh& cracks_;
     Eigen::MatrixXd C_, D_, G_, H_;  // H = K_R^-1 K^T C
     int assembledUnknowns_ = 0;
 };

@@ -57,6 +57,7 @@ std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Ei
         f.frame.normal = sum.normal.normalized();
         f.frame.ahead = (sum.ahead - sum.ahead.dot(f.frame.normal) * f.frame.normal).normalized();
         f.frame.tangent = f.frame.ahead.cross(f.frame.normal);
+        f.compressive = f.KI < 0.0;
         out.push_back(f);
     }
     return out;

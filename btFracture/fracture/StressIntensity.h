@@ -23,6 +23,9 @@ struct FrontSifs {
     FrontFrame frame;
     double KI = 0, KII = 0, KIII = 0;  // [Pa m^(1/2)]
     double spacing = 0;         // mean length of the adjacent front edges [m]
+    // Driven by compression (EST's compressive eigenvector choice, or K_I < 0): the toughness
+    // threshold is multiplied by the material's compressive factor.
+    bool compressive = false;
 };
 
 // Per front node, averaged over its front edges. `nodalOpenings` holds COD = u+ - u- at every

@@ -37,10 +37,12 @@ TEST(CrackSystem, SchurMatchesMonolithicAndIncrementalMatchesScratch) {
 
     // The same two-ring disc, once assembled from scratch and once grown: first only the
     // inner hexagon (one unknown, its centre), then the outer ring of triangles (six more).
-    CrackSystem scratch(solver);
+    CrackMesh scratchCracks;
+    CrackSystem scratch(solver, scratchCracks);
     addDiscCrack(scratch.cracks(), Eigen::Vector3d(0.02, -0.01, 0.03), Eigen::Vector3d(0.1, 0.2, 1.0), 0.1, 2);
     scratch.update();
-    CrackSystem grown(solver);
+    CrackMesh grownCracks;
+    CrackSystem grown(solver, grownCracks);
     const CrackMesh& full = scratch.cracks();
     for (int i = 0; i < full.nodeCount(); ++i) grown.cracks().addNode(full.node(i));
     for (int t = 0; t < 6; ++t) grown.cracks().addTriangle(full.triangle(t)[0], full.triangle(t)[1], full.triangle(t)[2]);
@@ -73,7 +75,8 @@ TEST(CrackSystem, PennyCrackUnderTension) {
     // closing notes: +1.5 % mean / 3.6 % worst here, +2.5 % / 5.7 % at six rings).
     const double a = 0.05, s = 1e6;
     const ElasticSolver solver(SurfaceMesh(makeBox({4 * a, 4 * a, 4 * a}, 6, 6, 6)), kMaterial);
-    CrackSystem system(solver);
+    CrackMesh cracks;
+    CrackSystem system(solver, cracks);
     addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), a, 4);
     system.update();
     Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
@@ -102,7 +105,8 @@ TEST(CrackSystem, InclinedPennyCrackMatchesKassirSih) {
     const double a = 0.05, s = 1e6, nu = kMaterial.poissonRatio(), alpha = M_PI / 4;
     const ElasticSolver solver(SurfaceMesh(makeBox({4 * a, 4 * a, 4 * a}, 6, 6, 6)), kMaterial);
     const Eigen::Vector3d normal(std::sin(alpha), 0.0, std::cos(alpha));
-    CrackSystem system(solver);
+    CrackMesh cracks;
+    CrackSystem system(solver, cracks);
     addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), normal, a, 4);
     system.update();
     Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
@@ -141,7 +145,8 @@ TEST(CrackSystem, CrackFacesAreTractionFreeUnderRefinement) {
     const Eigen::VectorXd q = uniformStressTractions(solver.mesh(), sigma);
     std::vector<double> worst;
     for (int rings : {4, 8}) {
-        CrackSystem system(solver);
+        CrackMesh cracks;
+    CrackSystem system(solver, cracks);
         addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), normal, a, rings);
         system.update();
         const CrackSystem::Solution sol = system.solve(q);
