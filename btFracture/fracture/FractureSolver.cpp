@@ -27,6 +27,8 @@ FractureSolver::FractureSolver(const ElasticSolver& solver, MaterialField field,
 FractureSolver::~FractureSolver() = default;
 
 void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
+    cracks_.refreshUnknowns();  // cracks may have been added from outside (pre-cracks, carried cracks)
+    arrested_.resize(cracks_.nodeCount(), 0);
     tractions_ = q;
     load_ = solver_.operators().tractionToLoad * q;
     solver_.netLoad(q);  // validates size

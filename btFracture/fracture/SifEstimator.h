@@ -26,6 +26,6 @@ EstimatorChoice chooseEigenvector(const FrontFrame& frame, const Eigen::Matrix3d
 // Estimated SIFs at a front point with frame `frame`, local stress `stress` [Pa] and crack area
 // `crackArea` [m^2]. K_I is positive; a compressive choice is flagged in `compressive`.
 FrontSifs estimateSifs(const FrontFrame& frame, const Eigen::Matrix3d& stress, double crackArea,
-                       double compressiveFactor, double geometryFactor = 1.1215);
+                       double compressiveFactor, double geometryFactor);
 
 }  // namespace btfracture
