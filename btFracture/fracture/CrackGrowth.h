@@ -2,7 +2,8 @@
 // Advancing crack fronts on the BEM crack mesh itself (the coarse sheet; issue 5 adds the
 // voxel-resolution markers): every moving front node gets a new node ahead of it, every front
 // edge a strip of new triangles, and over-long new front edges are split. A front node that
-// would leave the body or cross another crack stops there and is marked arrested.
+// would leave the body or cross another crack stops there and is arrested for good (the
+// voxel-resolution front of issue 5 is meant to handle fronts running along a surface).
 #include <btFracture/bem/CrackMesh.h>
 #include <btFracture/bem/SurfaceMesh.h>
 #include <btFracture/fracture/PropagationLaw.h>

@@ -59,6 +59,9 @@ public:
     std::vector<FrontSifs> frontSifs();                  // SIFs of the active method now
     FractureStepRecord step(int index);                  // one propagation step
 
+    // Front nodes that stopped for good (reached the surface head-on or met another crack).
+    bool isArrested(int node) const { return node < static_cast<int>(arrested_.size()) && arrested_[node]; }
+
     // Surface displacements of the current state (FULL: Eq. 4 solution; EST: updated, §4.3).
     const Eigen::VectorXd& displacements() const { return displacements_; }
     // COD at every crack node (FULL: solved; EST: estimated when the node left the front).
