@@ -73,15 +73,21 @@ int FractureSolver::seed() {
     return seeds;
 }
 
-std::vector<FrontSifs> FractureSolver::frontSifs() {
+std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
     const Material& m = field_.material();
-    if (active_ == FractureMethod::Full) return displacementCorrelation(cracks_, solvedOpenings_, m);
+    auto skip = [&](const FrontSifs& f) { return activeOnly && isArrested(f.node); };
+    if (active_ == FractureMethod::Full) {
+        std::vector<FrontSifs> all = displacementCorrelation(cracks_, solvedOpenings_, m);
+        all.erase(std::remove_if(all.begin(), all.end(), skip), all.end());
+        return all;
+    }
     // EST: frames from the crack geometry, SIFs from the surface-only local stress (§4.2).
     std::vector<FrontSifs> frames = displacementCorrelation(cracks_, Eigen::VectorXd::Zero(3 * cracks_.nodeCount()), m);
     const StressEvaluator stress(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), displacements_, tractions_);
     std::vector<FrontSifs> out;
     out.reserve(frames.size());
     for (const FrontSifs& f : frames) {
+        if (skip(f)) continue;
         double area = 0.0;
         if (!cracks_.trianglesAtNode(f.node).empty()) area = cracks_.sheetArea(cracks_.trianglesAtNode(f.node)[0]);
         FrontSifs e = estimateSifs(f.frame, stress.stressAt(f.position), area, m.compressiveFactor(),
@@ -102,18 +108,17 @@ FractureStepRecord FractureSolver::step(int index) {
         switchToEstimator();
     record.method = active_;
     Timer timer;
-    const std::vector<FrontSifs> sifs = frontSifs();
+    arrested_.resize(cracks_.nodeCount(), 0);
+    const std::vector<FrontSifs> sifs = frontSifs(true);
     record.sifSeconds = timer.seconds();
     record.frontNodes = static_cast<int>(sifs.size());
 
     timer.restart();
     const Material& m = field_.material();
     std::map<int, FrontAdvance> advances;
-    arrested_.resize(cracks_.nodeCount(), 0);
     for (const FrontSifs& f : sifs) {
         const double Kc = field_.fractureToughness(f.position) * (f.compressive ? m.compressiveFactor() : 1.0);
         record.maxLoadRatio = std::max(record.maxLoadRatio, effectiveK(f.KI, f.KII, f.KIII, m.poissonRatio()) / Kc);
-        if (arrested_[f.node]) continue;
         advances[f.node] = advanceOf(f, field_.fractureToughness(f.position), m.compressiveFactor(), m.poissonRatio(),
                                      settings_.frontEdgeLength * meanSize_, settings_.minimumSpeed);
     }

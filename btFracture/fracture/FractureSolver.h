@@ -56,7 +56,9 @@ public:
     // The pieces of run(), for tests and benchmarks:
     void beginEvent(const Eigen::VectorXd& tractions);  // crack-free / current solve, stresses
     int seed();                                          // initiation; returns new seeds
-    std::vector<FrontSifs> frontSifs();                  // SIFs of the active method now
+    // SIFs of the active method now; with activeOnly, arrested front nodes are left out (EST then
+    // evaluates the local stress only where the front can still move: cost ~ active front).
+    std::vector<FrontSifs> frontSifs(bool activeOnly = false);
     FractureStepRecord step(int index);                  // one propagation step
 
     // Front nodes that stopped for good (reached the surface head-on or met another crack).
