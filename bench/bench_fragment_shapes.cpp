@@ -29,7 +29,8 @@ TriangleMesh torus(double R, double r, int major, int minor) {
     for (int i = 0; i < major; ++i)
         for (int j = 0; j < minor; ++j) {
             const double u = 2.0 * M_PI * i / major, v = 2.0 * M_PI * j / minor;
-            m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+            m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
+                                    r * std::sin(v));
         }
     auto id = [&](int i, int j) { return (i % major) * minor + (j % minor); };
     for (int i = 0; i < major; ++i)
@@ -40,7 +41,9 @@ TriangleMesh torus(double R, double r, int major, int minor) {
     return m;
 }
 
-const char* tag(CollisionShapeKind kind) { return kind == CollisionShapeKind::GImpactMesh ? "gimpact" : "hacd"; }
+const char* tag(CollisionShapeKind kind) {
+    return kind == CollisionShapeKind::GImpactMesh ? "gimpact" : "hacd";
+}
 
 struct PileResult {
     double stepMs = 0.0, meanSpeed = 0.0;
@@ -66,8 +69,9 @@ PileResult pile(CollisionShapeKind kind, const TriangleMesh& mesh, double tube) 
     for (int i = 0; i < 24; ++i) {
         const btScalar x = btScalar(-0.25 + 0.25 * (i % 3)), z = btScalar(-0.125 + 0.25 * ((i / 3) % 2));
         const btScalar y = btScalar(0.1 + 0.12 * (i / 6));
-        btTransform pose(btQuaternion(btVector3(1, 0, btScalar(0.3 * (i % 4))).normalized(), btScalar(1.2 + 0.2 * i)),
-                         btVector3(x, y, z));
+        btTransform pose(
+            btQuaternion(btVector3(1, 0, btScalar(0.3 * (i % 4))).normalized(), btScalar(1.2 + 0.2 * i)),
+            btVector3(x, y, z));
         bodies.push_back(std::make_unique<btFractureRigidBody>(Material::glass(), mesh, settings, pose));
         world.addRigidBody(bodies.back().get());
     }
@@ -96,17 +100,19 @@ int main() {
     const double R = 0.08, r = 0.03;
     for (const int major : {24, 32, 48}) {
         const TriangleMesh mesh = torus(R, r, major, major / 2);
-        for (const CollisionShapeKind kind : {CollisionShapeKind::ConvexDecomposition, CollisionShapeKind::GImpactMesh}) {
+        for (const CollisionShapeKind kind :
+             {CollisionShapeKind::ConvexDecomposition, CollisionShapeKind::GImpactMesh}) {
             Timer timer;
             CollisionShapeOptions options;
             options.decompositionTriangleLimit = 1 << 30;  // measure HACD at every size
             const auto shape = buildCollisionShape(mesh, kind, options);
-            std::printf("METRIC shape_build_ms_%s_%zu %.2f ms  (%zu convex pieces)\n", tag(kind), mesh.triangles.size(),
-                        1e3 * timer.seconds(), shape->convexPieces().size());
+            std::printf("METRIC shape_build_ms_%s_%zu %.2f ms  (%zu convex pieces)\n", tag(kind),
+                        mesh.triangles.size(), 1e3 * timer.seconds(), shape->convexPieces().size());
         }
     }
     const TriangleMesh mesh = torus(R, r, 24, 12);
-    for (const CollisionShapeKind kind : {CollisionShapeKind::ConvexDecomposition, CollisionShapeKind::GImpactMesh}) {
+    for (const CollisionShapeKind kind :
+         {CollisionShapeKind::ConvexDecomposition, CollisionShapeKind::GImpactMesh}) {
         const PileResult p = pile(kind, mesh, r);
         std::printf("METRIC pile_step_ms_%s %.3f ms\n", tag(kind), p.stepMs);
         std::printf("METRIC pile_resting_speed_%s %.4f m/s\n", tag(kind), p.meanSpeed);

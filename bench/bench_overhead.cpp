@@ -39,11 +39,20 @@ struct Pile {
         }
         world->setGravity(btVector3(0, btScalar(-9.81), 0));
         // Floor and four walls of a 2 m x 2 m bin.
-        const btVector3 halves[5] = {{2, btScalar(0.5), 2}, {btScalar(0.1), 2, 2}, {btScalar(0.1), 2, 2}, {2, 2, btScalar(0.1)}, {2, 2, btScalar(0.1)}};
-        const btVector3 origins[5] = {{0, btScalar(-0.5), 0}, {btScalar(1.1), 2, 0}, {btScalar(-1.1), 2, 0}, {0, 2, btScalar(1.1)}, {0, 2, btScalar(-1.1)}};
+        const btVector3 halves[5] = {{2, btScalar(0.5), 2},
+                                     {btScalar(0.1), 2, 2},
+                                     {btScalar(0.1), 2, 2},
+                                     {2, 2, btScalar(0.1)},
+                                     {2, 2, btScalar(0.1)}};
+        const btVector3 origins[5] = {{0, btScalar(-0.5), 0},
+                                      {btScalar(1.1), 2, 0},
+                                      {btScalar(-1.1), 2, 0},
+                                      {0, 2, btScalar(1.1)},
+                                      {0, 2, btScalar(-1.1)}};
         for (int i = 0; i < 5; ++i) {
             shapes.push_back(std::make_unique<btBoxShape>(halves[i]));
-            statics.push_back(std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, shapes.back().get())));
+            statics.push_back(std::make_unique<btRigidBody>(
+                btRigidBody::btRigidBodyConstructionInfo(0, nullptr, shapes.back().get())));
             statics.back()->getWorldTransform().setOrigin(origins[i]);
             world->addRigidBody(statics.back().get());
         }
@@ -61,12 +70,14 @@ struct Pile {
             const btScalar x = btScalar(-0.9 + 0.2 * (column % 10) + 0.013 * (level % 3));
             const btScalar z = btScalar(-0.9 + 0.2 * (column / 10) - 0.011 * (level % 2));
             const btScalar y = btScalar(0.3 + 0.25 * level + 0.02 * (column % 7));
-            btTransform pose(btQuaternion(btVector3(1, 1, 0).normalized(), btScalar(0.3 * (i % 5))), btVector3(x, y, z));
+            btTransform pose(btQuaternion(btVector3(1, 1, 0).normalized(), btScalar(0.3 * (i % 5))),
+                             btVector3(x, y, z));
             std::unique_ptr<btRigidBody> body;
             if (i % 2 == 0) {
                 body = std::make_unique<btFractureRigidBody>(Material::glass(), box, never, pose);
             } else {
-                body = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(sphereMass, nullptr, sphere, sphereInertia));
+                body = std::make_unique<btRigidBody>(
+                    btRigidBody::btRigidBodyConstructionInfo(sphereMass, nullptr, sphere, sphereInertia));
                 body->setWorldTransform(pose);
             }
             body->setActivationState(DISABLE_DEACTIVATION);  // resting bodies keep costing solver work
@@ -127,11 +138,13 @@ int main() {
     }
     const auto* world = static_cast<btFractureDynamicsWorld*>(fracture.world.get());
     const FractureStatistics& s = world->fractureStatistics();
-    std::printf("bodies %d (250 fracturable boxes, 250 plain spheres), steps %d, contact manifolds at the end %d\n",
-                kBodies, kSteps, fracture.dispatcher.getNumManifolds());
+    std::printf(
+        "bodies %d (250 fracturable boxes, 250 plain spheres), steps %d, contact manifolds at the end %d\n",
+        kBodies, kSteps, fracture.dispatcher.getNumManifolds());
     std::printf("hook: %llu steps, %llu fracturable-body checks, %llu triggered, %llu engine calls\n",
                 static_cast<unsigned long long>(s.steps), static_cast<unsigned long long>(s.bodiesChecked),
-                static_cast<unsigned long long>(s.bodiesTriggered), static_cast<unsigned long long>(s.engineCalls));
+                static_cast<unsigned long long>(s.bodiesTriggered),
+                static_cast<unsigned long long>(s.engineCalls));
     std::printf("METRIC plain_step_ms %.4f ms\n", 1e3 * plainSeconds / kSteps);
     std::printf("METRIC fracture_world_step_ms %.4f ms\n", 1e3 * fractureSeconds / kSteps);
     std::printf("METRIC idle_overhead_ratio %.4f ratio\n", fractureSeconds / plainSeconds);

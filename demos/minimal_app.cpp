@@ -22,16 +22,19 @@ int main() {
     btCollisionDispatcher dispatcher(&config);
     btDbvtBroadphase broadphase;
     btSequentialImpulseConstraintSolver solver;
-    btFractureDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);  // (1) instead of btDiscreteDynamicsWorld
+    // (1) instead of btDiscreteDynamicsWorld
+    btFractureDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
     world.setGravity(btVector3(0, -9.81f, 0));
-    world.setFractureEngine(std::make_unique<PlaneSplitFractureEngine>());     // (2) who decides how things break
+    // (2) who decides how things break
+    world.setFractureEngine(std::make_unique<PlaneSplitFractureEngine>());
 
     btBoxShape groundShape(btVector3(5, 0.5f, 5));
     btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &groundShape));
     ground.getWorldTransform().setOrigin(btVector3(0, -0.5f, 0));
     world.addRigidBody(&ground);
 
-    FractureBodySettings settings;  // (3) a breakable body: material, shape, settings, pose
+    // (3) a breakable body: material, shape, settings, pose
+    FractureBodySettings settings;
     settings.impulseThreshold = 10;  // [N s]
     btTransform pose(btQuaternion::getIdentity(), btVector3(0, 0.025f, 0));
     btFractureRigidBody slab(Material::glass(), btBoxShape(btVector3(0.2f, 0.025f, 0.2f)), settings, pose);

@@ -3,6 +3,7 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
+#include <btFracture/dynamics/BulletEigen.h>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
@@ -30,16 +31,21 @@ CollisionShapeStorage::~CollisionShapeStorage() = default;
 
 const char* toString(CollisionShapeKind kind) {
     switch (kind) {
-        case CollisionShapeKind::ConvexHull: return "convex hull";
-        case CollisionShapeKind::ConvexDecomposition: return "convex decomposition";
-        case CollisionShapeKind::GImpactMesh: return "GImpact mesh";
+        case CollisionShapeKind::ConvexHull:
+            return "convex hull";
+        case CollisionShapeKind::ConvexDecomposition:
+            return "convex decomposition";
+        case CollisionShapeKind::GImpactMesh:
+            return "GImpact mesh";
     }
     return "?";
 }
 
 namespace {
 
-std::string meshName(const TriangleMesh& mesh) { return mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name; }
+std::string meshName(const TriangleMesh& mesh) {
+    return mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name;
+}
 
 // A btConvexHullShape whose hull is the hull of `points` shrunk by `margin` (clamped by Bullet
 // to a quarter of the inradius); returns its collision geometry (shrunk points + actual margin).
@@ -67,8 +73,7 @@ std::unique_ptr<btConvexHullShape> shrunkHull(const std::vector<Eigen::Vector3d>
     piece.points.clear();
     for (int i = 0; i < hull.vertices.size(); ++i) {
         shape->addPoint(hull.vertices[i], false);
-        piece.points.emplace_back(double(hull.vertices[i].x()), double(hull.vertices[i].y()),
-                                  double(hull.vertices[i].z()));
+        piece.points.push_back(toEigen(hull.vertices[i]));
     }
     shape->setMargin(btScalar(actualMargin));
     shape->recalcLocalAabb();
@@ -78,7 +83,8 @@ std::unique_ptr<btConvexHullShape> shrunkHull(const std::vector<Eigen::Vector3d>
 
 // HACD clusters of the mesh as point sets (HACD works in its own normalised [0, 1000] frame
 // and returns denormalised hull points).
-std::vector<std::vector<Eigen::Vector3d>> decompose(const TriangleMesh& mesh, const CollisionShapeOptions& options) {
+std::vector<std::vector<Eigen::Vector3d>> decompose(const TriangleMesh& mesh,
+                                                    const CollisionShapeOptions& options) {
     std::vector<HACD::Vec3<HACD::Real>> points;
     points.reserve(mesh.vertices.size());
     for (const auto& v : mesh.vertices) points.emplace_back(v.x(), v.y(), v.z());
@@ -119,10 +125,11 @@ std::vector<std::vector<Eigen::Vector3d>> decompose(const TriangleMesh& mesh, co
 }  // namespace
 
 std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& mesh, CollisionShapeKind kind,
-                                                            const CollisionShapeOptions& options) {
+                                                           const CollisionShapeOptions& options) {
     const std::string name = meshName(mesh);
     if (mesh.vertices.size() < 4 || mesh.triangles.size() < 4)
-        throw Error(name + ": a collision shape needs a closed mesh with at least 4 vertices and 4 triangles");
+        throw Error(name +
+                    ": a collision shape needs a closed mesh with at least 4 vertices and 4 triangles");
     if (!(options.margin >= 0.0) || !std::isfinite(options.margin)) {
         std::ostringstream out;
         out << name << ": collision margin " << options.margin << " m (need finite, >= 0)";
@@ -133,8 +140,9 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
 
     if (kind == CollisionShapeKind::ConvexDecomposition &&
         mesh.triangles.size() > static_cast<std::size_t>(std::max(0, options.decompositionTriangleLimit))) {
-        logf(LogLevel::Debug, name, ": ", mesh.triangles.size(), " triangles exceed the decomposition limit of ",
-             options.decompositionTriangleLimit, "; using a GImpact mesh shape");
+        logf(LogLevel::Debug, name, ": ", mesh.triangles.size(),
+             " triangles exceed the decomposition limit of ", options.decompositionTriangleLimit,
+             "; using a GImpact mesh shape");
         kind = CollisionShapeKind::GImpactMesh;
     }
     auto storage = std::make_unique<CollisionShapeStorage>();
@@ -156,7 +164,8 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
             identity.setIdentity();
             for (std::size_t c = 0; c < clusters.size(); ++c) {
                 ConvexPolytope piece;
-                impl.children.push_back(shrunkHull(clusters[c], margin, name + " piece " + std::to_string(c), piece));
+                impl.children.push_back(
+                    shrunkHull(clusters[c], margin, name + " piece " + std::to_string(c), piece));
                 compound->addChildShape(identity, impl.children.back().get());
                 storage->pieces_.push_back(std::move(piece));
             }
@@ -165,11 +174,14 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
             break;
         }
         case CollisionShapeKind::GImpactMesh: {
-            for (const auto& v : mesh.vertices) impl.vertices.insert(impl.vertices.end(), {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())});
+            for (const auto& v : mesh.vertices)
+                impl.vertices.insert(impl.vertices.end(),
+                                     {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())});
             for (const auto& t : mesh.triangles) impl.indices.insert(impl.indices.end(), {t[0], t[1], t[2]});
             impl.meshInterface = std::make_unique<btTriangleIndexVertexArray>(
-                static_cast<int>(mesh.triangles.size()), impl.indices.data(), 3 * static_cast<int>(sizeof(int)),
-                static_cast<int>(mesh.vertices.size()), impl.vertices.data(), 3 * static_cast<int>(sizeof(btScalar)));
+                static_cast<int>(mesh.triangles.size()), impl.indices.data(),
+                3 * static_cast<int>(sizeof(int)), static_cast<int>(mesh.vertices.size()),
+                impl.vertices.data(), 3 * static_cast<int>(sizeof(btScalar)));
             auto gimpact = std::make_unique<btGImpactMeshShape>(impl.meshInterface.get());
             gimpact->setMargin(btScalar(margin));
             gimpact->updateBound();

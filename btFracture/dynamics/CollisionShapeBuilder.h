@@ -61,7 +61,7 @@ public:
 
 private:
     friend std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh&, CollisionShapeKind,
-                                                                       const CollisionShapeOptions&);
+                                                                      const CollisionShapeOptions&);
     struct Impl;
     std::unique_ptr<Impl> impl_;
     btCollisionShape* shape_ = nullptr;
@@ -72,7 +72,8 @@ private:
 
 // Throws btfracture::Error naming mesh.name when the mesh is empty or flat, or the decomposition
 // yields no piece.
-std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& bodyFrameMesh, CollisionShapeKind kind,
-                                                            const CollisionShapeOptions& options = {});
+std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& bodyFrameMesh,
+                                                           CollisionShapeKind kind,
+                                                           const CollisionShapeOptions& options = {});
 
 }  // namespace btfracture

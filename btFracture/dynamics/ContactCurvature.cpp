@@ -23,8 +23,8 @@ std::vector<double> vertexMeanCurvature(const TriangleMesh& mesh) {
     std::map<std::pair<int, int>, int> edgeOwner;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& tri = mesh.triangles[t];
-        const Eigen::Vector3d n =
-            (mesh.vertices[tri[1]] - mesh.vertices[tri[0]]).cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
+        const Eigen::Vector3d n = (mesh.vertices[tri[1]] - mesh.vertices[tri[0]])
+                                      .cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
         const double a = 0.5 * n.norm();
         normals[t] = a > 0.0 ? Eigen::Vector3d(n / (2.0 * a)) : Eigen::Vector3d::Zero();
         for (int k = 0; k < 3; ++k) {
@@ -85,7 +85,8 @@ double shapeMeanCurvature(const btCollisionShape& shape, const Eigen::Vector3d& 
             const bool onCap = halfHeight - std::abs(p[up]) < r - std::sqrt(radial2);
             return (!onCap && r > 0.0) ? 0.5 / r : 0.0;
         }
-        default: return 0.0;
+        default:
+            return 0.0;
     }
 }
 

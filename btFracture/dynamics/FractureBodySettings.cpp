@@ -9,9 +9,12 @@ namespace btfracture {
 
 const char* toString(FractureMethod method) {
     switch (method) {
-        case FractureMethod::Full: return "FULL";
-        case FractureMethod::Estimated: return "EST";
-        case FractureMethod::Hybrid: return "HYBRID";
+        case FractureMethod::Full:
+            return "FULL";
+        case FractureMethod::Estimated:
+            return "EST";
+        case FractureMethod::Hybrid:
+            return "HYBRID";
     }
     return "?";
 }

@@ -24,23 +24,23 @@ class btFractureRigidBody;
 // Counters kept by the world; an engine increments bemBuilds whenever it assembles and factors
 // a BEM system (so tests can assert that a body under its threshold builds none).
 struct FractureStatistics {
-    std::uint64_t steps = 0;              // internal steps with fracture active
-    std::uint64_t bodiesChecked = 0;      // fracturable bodies with contacts, summed over steps
-    std::uint64_t bodiesTriggered = 0;    // ... whose impulse sum reached the threshold
-    std::uint64_t engineCalls = 0;        // FractureEngine::fracture() calls
-    std::uint64_t engineFailures = 0;     // calls that threw btfracture::Error (body made unbreakable)
-    std::uint64_t fractureEvents = 0;     // calls that returned fragments
-    std::uint64_t fragmentsSpawned = 0;   // bodies added in place of their parents
-    std::uint64_t replayedSteps = 0;      // steps rolled back and replayed after a fracture
-    std::uint64_t bemBuilds = 0;          // incremented by the engine
+    std::uint64_t steps = 0;             // internal steps with fracture active
+    std::uint64_t bodiesChecked = 0;     // fracturable bodies with contacts, summed over steps
+    std::uint64_t bodiesTriggered = 0;   // ... whose impulse sum reached the threshold
+    std::uint64_t engineCalls = 0;       // FractureEngine::fracture() calls
+    std::uint64_t engineFailures = 0;    // calls that threw btfracture::Error (body made unbreakable)
+    std::uint64_t fractureEvents = 0;    // calls that returned fragments
+    std::uint64_t fragmentsSpawned = 0;  // bodies added in place of their parents
+    std::uint64_t replayedSteps = 0;     // steps rolled back and replayed after a fracture
+    std::uint64_t bemBuilds = 0;         // incremented by the engine
 };
 
 struct FragmentSpec {
     // Collision-resolution closed surface, parent body frame [m] (outward-oriented, as
     // requireClosedSolid accepts).
     TriangleMesh collisionMesh;
-    double volume = 0.0;                                       // [m^3], measured on the level set
-    Eigen::Vector3d centreOfMass = Eigen::Vector3d::Zero();    // parent body frame [m]
+    double volume = 0.0;                                     // [m^3], measured on the level set
+    Eigen::Vector3d centreOfMass = Eigen::Vector3d::Zero();  // parent body frame [m]
     // Inertia tensor about the fragment's centre of mass at the parent's density, parent-frame
     // axes [kg m^2] (= density * unit-density tensor of geometry/MassProperties.h).
     Eigen::Matrix3d inertiaAboutCom = Eigen::Matrix3d::Zero();
@@ -59,8 +59,16 @@ struct FragmentSpec {
     std::unique_ptr<FractureState> carriedState;
 };
 
+// Where the engine's time went (wall clock [s]); reported to listeners in FractureEventInfo.
+struct EngineTimings {
+    double bem = 0.0;       // building and solving the elastic system
+    double fracture = 0.0;  // SIFs, initiation, crack propagation
+    double geometry = 0.0;  // level-set cuts, segmentation, fragment meshes and mass properties
+};
+
 struct FractureOutcome {
     std::vector<FragmentSpec> fragments;  // empty: nothing broke, the step stands as it is
+    EngineTimings timings;                // optional
 };
 
 class FractureEngine {
@@ -73,6 +81,13 @@ public:
     // btfracture::Error for bad input: the world logs it and makes the body unbreakable.
     virtual FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
                                      FractureStatistics& stats) = 0;
+
+    // Mean curvature [1/m] of `body`'s surface near `bodyPoint` (body frame), whose inverse is the
+    // body's Hertz radius at a contact (§5.1). The world asks before calling fracture(), for every
+    // contact of a triggered body (and for a btFractureRigidBody on the other side). Default: the
+    // mesh proxy btFractureRigidBody::meanCurvatureAt; an engine that holds a level set
+    // (LevelSetBody::meanCurvature) can answer better.
+    virtual double meanCurvature(const btFractureRigidBody& body, const Eigen::Vector3d& bodyPoint) const;
 };
 
 }  // namespace btfracture

@@ -35,7 +35,8 @@ ConvexPolytope shifted(const ConvexPolytope& piece, const Eigen::Vector3d& offse
 
 }  // namespace
 
-SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies, const SeparationOptions& options) {
+SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies,
+                                  const SeparationOptions& options) {
     const std::size_t n = bodies.size();
     SeparationResult result;
     result.pushes.assign(n, Eigen::Vector3d::Zero());
@@ -59,8 +60,8 @@ SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies, con
                             convexPenetration(shifted(a, result.pushes[i]), shifted(b, result.pushes[j]));
                         if (!pen.overlapping || pen.depth <= tolerance) continue;
                         result.remainingDepth = std::max(result.remainingDepth, pen.depth);
-                        logf(LogLevel::Debug, "fragment separation: bodies ", i, " and ", j, " overlap by ", pen.depth,
-                             " m along (", pen.direction.transpose(), ")");
+                        logf(LogLevel::Debug, "fragment separation: bodies ", i, " and ", j, " overlap by ",
+                             pen.depth, " m along (", pen.direction.transpose(), ")");
                         if (capped[i] && capped[j]) continue;
                         const double mi = bodies[i].mass, mj = bodies[j].mass;
                         // Both move when free; a capped body stays, the other takes the whole push.
@@ -74,12 +75,15 @@ SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies, con
                         ++result.overlapsResolved;
                         moved = true;
                         for (std::size_t k : {i, j})
-                            if (!capped[k] && result.pushes[k].norm() > options.maxPushFraction * bodies[k].length) {
-                                result.pushes[k] *= options.maxPushFraction * bodies[k].length / result.pushes[k].norm();
+                            if (!capped[k] &&
+                                result.pushes[k].norm() > options.maxPushFraction * bodies[k].length) {
+                                result.pushes[k] *=
+                                    options.maxPushFraction * bodies[k].length / result.pushes[k].norm();
                                 capped[k] = 1;
-                                logf(LogLevel::Warning, "fragment separation: body ", k, " needs more than ",
-                                     options.maxPushFraction, " of its size (", bodies[k].length,
-                                     " m) to clear its overlaps; push capped, the rest is left to the solver");
+                                logf(
+                                    LogLevel::Warning, "fragment separation: body ", k, " needs more than ",
+                                    options.maxPushFraction, " of its size (", bodies[k].length,
+                                    " m) to clear its overlaps; push capped, the rest is left to the solver");
                             }
                     }
             }

@@ -20,9 +20,9 @@ struct SeparationBody {
 };
 
 struct SeparationOptions {
-    int maxSweeps = 8;               // passes over all pairs
-    double tolerance = 1e-6;         // overlaps below tolerance * min length are left alone
-    double maxPushFraction = 0.1;    // a body moves at most this fraction of its length (logged)
+    int maxSweeps = 8;             // passes over all pairs
+    double tolerance = 1e-6;       // overlaps below tolerance * min length are left alone
+    double maxPushFraction = 0.1;  // a body moves at most this fraction of its length (logged)
 };
 
 struct SeparationResult {
@@ -32,6 +32,7 @@ struct SeparationResult {
     int overlapsResolved = 0;
 };
 
-SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies, const SeparationOptions& options = {});
+SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies,
+                                  const SeparationOptions& options = {});
 
 }  // namespace btfracture

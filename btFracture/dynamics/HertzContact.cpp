@@ -49,7 +49,8 @@ HertzImpact hertzImpact(const HertzBody& a, const HertzBody& b, double approachS
         throw Error(out.str());
     }
     const double inverseMass = a.inverseMass + b.inverseMass;
-    if (!(inverseMass > 0.0)) throw Error("hertzImpact: both bodies have infinite mass (static or kinematic)");
+    if (!(inverseMass > 0.0))
+        throw Error("hertzImpact: both bodies have infinite mass (static or kinematic)");
 
     HertzImpact h;
     h.effectiveModulus = 1.0 / ((1.0 - a.poissonRatio * a.poissonRatio) / a.youngsModulus +
@@ -79,7 +80,8 @@ HertzImpact hertzImpact(const HertzBody& a, const HertzBody& b, double approachS
 
     const double m = h.effectiveMass, E = h.effectiveModulus, R = h.effectiveRadius, v = h.approachSpeed;
     h.contactDuration = kDurationConstant * std::pow(m * m / (E * E * R * v), 0.2);
-    h.peakForce = kPeakForceConstant * std::pow(E, 0.4) * std::pow(R, 0.2) * std::pow(m, 0.6) * std::pow(v, 1.2);
+    h.peakForce =
+        kPeakForceConstant * std::pow(E, 0.4) * std::pow(R, 0.2) * std::pow(m, 0.6) * std::pow(v, 1.2);
     return h;
 }
 

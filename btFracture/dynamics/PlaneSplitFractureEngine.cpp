@@ -2,10 +2,11 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/ConvexHullMesh.h>
 #include <btFracture/dynamics/TractionBalance.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
-#include <btFracture/core/MassProperties.h>
 
 #include <Eigen/Geometry>
 
@@ -42,7 +43,8 @@ TriangleMesh half(const TriangleMesh& mesh, const std::vector<double>& distance,
         if (inserted) {
             // Same arithmetic for both halves (canonical edge order): the cut vertices coincide.
             const double t = distance[key.first] / (distance[key.first] - distance[key.second]);
-            out.vertices.push_back(mesh.vertices[key.first] + t * (mesh.vertices[key.second] - mesh.vertices[key.first]));
+            out.vertices.push_back(mesh.vertices[key.first] +
+                                   t * (mesh.vertices[key.second] - mesh.vertices[key.first]));
         }
         return it->second;
     };
@@ -54,7 +56,8 @@ TriangleMesh half(const TriangleMesh& mesh, const std::vector<double>& distance,
             if (inA) polygon.push_back(keep(a));
             if (inA != inB) polygon.push_back(cutPoint(a, b));
         }
-        for (std::size_t k = 1; k + 1 < polygon.size(); ++k) out.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
+        for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
+            out.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
     }
     if (cut.size() < 3) return out;
     // Cap: the cut vertices in angular order around their centroid, fanned from it, facing -side*n.
@@ -72,8 +75,10 @@ TriangleMesh half(const TriangleMesh& mesh, const std::vector<double>& distance,
     out.vertices.push_back(centre);
     for (std::size_t k = 0; k < ring.size(); ++k) {
         const int a = ring[k].second, b = ring[(k + 1) % ring.size()].second;
-        if (side > 0.0) out.triangles.push_back({c, b, a});
-        else out.triangles.push_back({c, a, b});
+        if (side > 0.0)
+            out.triangles.push_back({c, b, a});
+        else
+            out.triangles.push_back({c, a, b});
     }
     return out;
 }
@@ -81,7 +86,7 @@ TriangleMesh half(const TriangleMesh& mesh, const std::vector<double>& distance,
 }  // namespace
 
 std::pair<TriangleMesh, TriangleMesh> splitConvexMesh(const TriangleMesh& mesh, const Eigen::Vector3d& point,
-                                                       const Eigen::Vector3d& normal) {
+                                                      const Eigen::Vector3d& normal) {
     const std::string name = mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name;
     if (!(normal.norm() > 0.0) || !normal.allFinite() || !point.allFinite())
         throw Error(name + ": plane split needs a finite point and a non-zero normal");
@@ -114,22 +119,28 @@ std::pair<TriangleMesh, TriangleMesh> splitConvexMesh(const TriangleMesh& mesh, 
 
 PlaneSplitFractureEngine::PlaneSplitFractureEngine(const PlaneSplitSettings& settings) : settings_(settings) {
     if (!(settings.convexHullFraction >= 0.0 && settings.convexHullFraction <= settings.meshFraction &&
-          settings.meshFraction <= 1.0 && settings.keepParentFraction > 0.5 && settings.keepParentFraction <= 1.0))
-        throw Error("PlaneSplitFractureEngine: volume fractions must satisfy 0 <= convexHull <= mesh <= 1 and "
-                    "0.5 < keepParent <= 1");
+          settings.meshFraction <= 1.0 && settings.keepParentFraction > 0.5 &&
+          settings.keepParentFraction <= 1.0))
+        throw Error(
+            "PlaneSplitFractureEngine: volume fractions must satisfy 0 <= convexHull <= mesh <= 1 and "
+            "0.5 < keepParent <= 1");
 }
 
 void PlaneSplitFractureEngine::ensureState(btFractureRigidBody& body, FractureStatistics& stats) const {
     if (dynamic_cast<PlaneSplitState*>(body.fractureState())) return;
-    if (!isConvex(body.mesh())) throw Error(body.name() + ": PlaneSplitFractureEngine splits convex bodies only");
+    if (!isConvex(body.mesh()))
+        throw Error(body.name() + ": PlaneSplitFractureEngine splits convex bodies only");
     body.setFractureState(std::make_unique<PlaneSplitState>(body.mesh()));
     ++stats.bemBuilds;
 }
 
-FractureOutcome PlaneSplitFractureEngine::fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
+FractureOutcome PlaneSplitFractureEngine::fracture(btFractureRigidBody& body,
+                                                   const std::vector<BodyContact>& contacts,
                                                    FractureStatistics& stats) {
     if (contacts.empty()) return {};
+    Timer timer;
     ensureState(body, stats);
+    const double stateSeconds = timer.seconds();
     // The hardest impact: resting contacts (floored approach speed) have tiny Hertz peak forces.
     const BodyContact* impact = &contacts.front();
     for (const BodyContact& c : contacts)
@@ -137,7 +148,11 @@ FractureOutcome PlaneSplitFractureEngine::fracture(btFractureRigidBody& body, co
     const Eigen::Vector3d direction = impact->direction.normalized();
     int axis = 0;
     direction.cwiseAbs().minCoeff(&axis);
-    return split(body, impact->point, direction.cross(Eigen::Vector3d::Unit(axis)));
+    timer.restart();
+    FractureOutcome outcome = split(body, impact->point, direction.cross(Eigen::Vector3d::Unit(axis)));
+    outcome.timings.bem = stateSeconds;  // the stand-in's "BEM": building its balancer
+    outcome.timings.geometry = timer.seconds();
+    return outcome;
 }
 
 FractureOutcome PlaneSplitFractureEngine::split(const btFractureRigidBody& body, const Eigen::Vector3d& point,

@@ -36,7 +36,8 @@ protected:
     void ensureState(btFractureRigidBody& body, FractureStatistics& stats) const;
     // Both halves of `body` cut by the plane n.(x - p) = 0 (body frame), classified; empty when
     // the plane misses the body.
-    FractureOutcome split(const btFractureRigidBody& body, const Eigen::Vector3d& p, const Eigen::Vector3d& n) const;
+    FractureOutcome split(const btFractureRigidBody& body, const Eigen::Vector3d& p,
+                          const Eigen::Vector3d& n) const;
 
 private:
     PlaneSplitSettings settings_;
@@ -46,6 +47,6 @@ private:
 // the positive side. A half is empty when the plane misses the mesh. Vertices within a relative
 // 1e-9 of the plane move it by 1e-6 of the mesh size along n (logged).
 std::pair<TriangleMesh, TriangleMesh> splitConvexMesh(const TriangleMesh& mesh, const Eigen::Vector3d& p,
-                                                       const Eigen::Vector3d& n);
+                                                      const Eigen::Vector3d& n);
 
 }  // namespace btfracture

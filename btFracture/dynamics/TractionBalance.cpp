@@ -12,7 +12,9 @@
 namespace btfracture {
 namespace {
 
-std::string meshName(const TriangleMesh& mesh) { return mesh.name.empty() ? std::string("<unnamed BEM mesh>") : mesh.name; }
+std::string meshName(const TriangleMesh& mesh) {
+    return mesh.name.empty() ? std::string("<unnamed BEM mesh>") : mesh.name;
+}
 
 // Below this ratio of smallest to largest eigenvalue of the scaled A A^T the constraints are
 // treated as dependent.
@@ -36,7 +38,8 @@ TractionBalancer::TractionBalancer(TriangleMesh bemMesh) : mesh_(std::move(bemMe
         for (int i : tri)
             if (i < 0 || i >= nv) {
                 std::ostringstream out;
-                out << name << ": BEM triangle " << e << " has corner index " << i << " outside [0, " << nv << ")";
+                out << name << ": BEM triangle " << e << " has corner index " << i << " outside [0, " << nv
+                    << ")";
                 throw Error(out.str());
             }
         const Eigen::Vector3d& a = mesh_.vertices[tri[0]];
@@ -47,7 +50,9 @@ TractionBalancer::TractionBalancer(TriangleMesh bemMesh) : mesh_(std::move(bemMe
         sumArea2 += areas_[e] * areas_[e];
         sumArea2Radius2 += areas_[e] * areas_[e] * centroids_[e].squaredNorm();
     }
-    if (!(sumArea2 > 0.0)) throw Error(name + ": traction balancing: A A^T is singular because the BEM mesh has zero total area");
+    if (!(sumArea2 > 0.0))
+        throw Error(name +
+                    ": traction balancing: A A^T is singular because the BEM mesh has zero total area");
 
     // Scale the torque rows by 1/L (L = area-weighted RMS centroid radius) so that both row
     // blocks have the same units; the constraint set and the minimum-norm correction are unchanged.
@@ -71,14 +76,16 @@ TractionBalancer::TractionBalancer(TriangleMesh bemMesh) : mesh_(std::move(bemMe
     if (eigen.info() != Eigen::Success || !(lambda(0) > kSingularRatio * lambda(5))) {
         const Eigen::Matrix<double, 6, 1> weakest = eigen.eigenvectors().col(0);
         std::ostringstream out;
-        out << name << ": traction balancing: A A^T is singular (smallest/largest eigenvalue " << lambda(0) / lambda(5)
-            << " < " << kSingularRatio << "); its weakest combination has force part ["
-            << weakest.head<3>().transpose() << "] and torque part [" << weakest.tail<3>().transpose()
+        out << name << ": traction balancing: A A^T is singular (smallest/largest eigenvalue "
+            << lambda(0) / lambda(5) << " < " << kSingularRatio
+            << "); its weakest combination has force part [" << weakest.head<3>().transpose()
+            << "] and torque part [" << weakest.tail<3>().transpose()
             << "]: the triangle centroids lie on one line through the origin, so the torque about that line "
                "cannot be controlled by P0 tractions";
         throw Error(out.str());
     }
-    inverseNormal_ = eigen.eigenvectors() * lambda.cwiseInverse().asDiagonal() * eigen.eigenvectors().transpose();
+    inverseNormal_ =
+        eigen.eigenvectors() * lambda.cwiseInverse().asDiagonal() * eigen.eigenvectors().transpose();
     // Undo the 1/sumArea2 normalisation of the matrix: (A'A'^T)^-1 = inverseNormal_ / sumArea2.
     inverseNormal_ /= sumArea2;
 }
@@ -92,10 +99,14 @@ TractionField TractionBalancer::contactTractions(const std::vector<BodyContact>&
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         const BodyContact& c = contacts[k];
         std::ostringstream problem;
-        if (!c.point.allFinite()) problem << "non-finite point";
-        else if (!(c.impulse >= 0.0) || !std::isfinite(c.impulse)) problem << "impulse " << c.impulse << " N s (need >= 0)";
-        else if (!(c.duration > 0.0) || !std::isfinite(c.duration)) problem << "contact duration " << c.duration << " s (need > 0)";
-        else if (!c.direction.allFinite() || !(c.direction.norm() > 0.0)) problem << "zero or non-finite direction";
+        if (!c.point.allFinite())
+            problem << "non-finite point";
+        else if (!(c.impulse >= 0.0) || !std::isfinite(c.impulse))
+            problem << "impulse " << c.impulse << " N s (need >= 0)";
+        else if (!(c.duration > 0.0) || !std::isfinite(c.duration))
+            problem << "contact duration " << c.duration << " s (need > 0)";
+        else if (!c.direction.allFinite() || !(c.direction.norm() > 0.0))
+            problem << "zero or non-finite direction";
         if (problem.tellp() > 0) {
             std::ostringstream out;
             out << meshName(mesh_) << ": contact " << k << ": " << problem.str();
@@ -142,7 +153,8 @@ TractionField TractionBalancer::balance(const TractionField& q) const {
     const Eigen::Vector3d vt = torqueRowScale_ * v.tail<3>();
     // Block e of A'^T v: A_e (v_f + s [c_e]x^T v_t) = A_e (v_f + s v_t x c_e).
     TractionField balanced(q.size());
-    for (std::size_t e = 0; e < q.size(); ++e) balanced[e] = q[e] - areas_[e] * (vf + vt.cross(centroids_[e]));
+    for (std::size_t e = 0; e < q.size(); ++e)
+        balanced[e] = q[e] - areas_[e] * (vf + vt.cross(centroids_[e]));
     return balanced;
 }
 

@@ -24,8 +24,8 @@ using TractionField = std::vector<Eigen::Vector3d>;  // one traction [Pa] per tr
 struct NetLoad {
     Eigen::Vector3d force = Eigen::Vector3d::Zero();   // sum A_e q_e [N]
     Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // sum A_e c_e x q_e [N m]
-    double forceScale = 0.0;   // sum A_e |q_e| [N], for relative checks
-    double torqueScale = 0.0;  // sum A_e |c_e| |q_e| [N m]
+    double forceScale = 0.0;                           // sum A_e |q_e| [N], for relative checks
+    double torqueScale = 0.0;                          // sum A_e |c_e| |q_e| [N m]
 };
 
 // Precomputes areas, centroids and the factored 6x6 matrix A A^T of one BEM mesh (the mesh is
@@ -57,7 +57,7 @@ private:
     TriangleMesh mesh_;
     std::vector<double> areas_;
     std::vector<Eigen::Vector3d> centroids_;
-    double torqueRowScale_ = 1.0;  // 1/L: torque rows scaled to force units for conditioning
+    double torqueRowScale_ = 1.0;                // 1/L: torque rows scaled to force units for conditioning
     Eigen::Matrix<double, 6, 6> inverseNormal_;  // (A' A'^T)^-1 with the scaled rows A'
 };
 

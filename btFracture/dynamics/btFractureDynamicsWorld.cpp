@@ -2,13 +2,14 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/MassProperties.h>
 #include <btFracture/core/Timer.h>
+#include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/ContactCurvature.h>
 #include <btFracture/dynamics/ConvexHullMesh.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/HertzContact.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
-#include <btFracture/core/MassProperties.h>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btCollisionConfiguration.h>
@@ -28,19 +29,6 @@
 namespace btfracture {
 namespace {
 
-Eigen::Vector3d toEigen(const btVector3& v) { return Eigen::Vector3d(double(v.x()), double(v.y()), double(v.z())); }
-btVector3 toBullet(const Eigen::Vector3d& v) { return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())); }
-Eigen::Matrix3d toEigen(const btMatrix3x3& m) {
-    Eigen::Matrix3d out;
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) out(r, c) = double(m[r][c]);
-    return out;
-}
-btMatrix3x3 toBullet(const Eigen::Matrix3d& m) {
-    return btMatrix3x3(btScalar(m(0, 0)), btScalar(m(0, 1)), btScalar(m(0, 2)), btScalar(m(1, 0)), btScalar(m(1, 1)),
-                       btScalar(m(1, 2)), btScalar(m(2, 0)), btScalar(m(2, 1)), btScalar(m(2, 2)));
-}
-
 btFractureRigidBody* fracturable(const btCollisionObject* object) {
     btFractureRigidBody* body = btFractureRigidBody::upcast(const_cast<btCollisionObject*>(object));
     return body && body->isFracturable() ? body : nullptr;
@@ -56,10 +44,14 @@ bool wasSolved(const btPersistentManifold& manifold) {
 
 const char* className(FragmentSpec::Class cls) {
     switch (cls) {
-        case FragmentSpec::Class::ConvexHull: return "convex hull";
-        case FragmentSpec::Class::Mesh: return "mesh";
-        case FragmentSpec::Class::Breakable: return "breakable";
-        case FragmentSpec::Class::KeepsParentSolver: return "keeps parent solver";
+        case FragmentSpec::Class::ConvexHull:
+            return "convex hull";
+        case FragmentSpec::Class::Mesh:
+            return "mesh";
+        case FragmentSpec::Class::Breakable:
+            return "breakable";
+        case FragmentSpec::Class::KeepsParentSolver:
+            return "keeps parent solver";
     }
     return "?";
 }
@@ -78,7 +70,8 @@ void validateSpec(const FragmentSpec& spec, const std::string& where) {
     else if (!J.allFinite() || (J - J.transpose()).norm() > 1e-9 * J.norm())
         problem << "inertia tensor not finite and symmetric";
     else if (spec.carriedState && spec.cls != FragmentSpec::Class::Breakable)
-        problem << "carries a FractureState but is of class '" << className(spec.cls) << "' (only breakable may)";
+        problem << "carries a FractureState but is of class '" << className(spec.cls)
+                << "' (only breakable may)";
     if (problem.tellp() > 0) throw Error(where + ": " + problem.str());
     const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(J).eigenvalues();
     if (!(moments(0) > 0.0) || moments(0) + moments(1) < moments(2) * (1.0 - 1e-6)) {
@@ -97,10 +90,12 @@ class MultipointContactsForNewPairs {
 public:
     explicit MultipointContactsForNewPairs(btCollisionConfiguration* configuration) {
         if (!configuration) return;
-        convex_ = dynamic_cast<btConvexConvexAlgorithm::CreateFunc*>(
-            configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
+        convex_ =
+            dynamic_cast<btConvexConvexAlgorithm::CreateFunc*>(configuration->getCollisionAlgorithmCreateFunc(
+                CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
         plane_ = dynamic_cast<btConvexPlaneCollisionAlgorithm::CreateFunc*>(
-            configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, STATIC_PLANE_PROXYTYPE));
+            configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE,
+                                                           STATIC_PLANE_PROXYTYPE));
         if (convex_) {
             saved_[0] = convex_->m_numPerturbationIterations;
             saved_[1] = convex_->m_minimumPointsPerturbationThreshold;
@@ -145,8 +140,8 @@ Eigen::Matrix3d worldInertia(const btRigidBody& body) {
 // (I_0, I': the fragments' inertia about their common centre before and after the pushes) and
 // v_f = V + w' x (x_f - X'), V the velocity of the old common centre. Linear momentum and angular
 // momentum about the centre of mass are then exactly those the unpushed fragments carried.
-void assignParentMotion(const std::vector<btFractureRigidBody*>& fragments, const std::vector<Eigen::Vector3d>& pushes,
-                        const btRigidBody& parent) {
+void assignParentMotion(const std::vector<btFractureRigidBody*>& fragments,
+                        const std::vector<Eigen::Vector3d>& pushes, const btRigidBody& parent) {
     const Eigen::Vector3d parentOrigin = toEigen(parent.getWorldTransform().getOrigin());
     const Eigen::Vector3d v = toEigen(parent.getLinearVelocity());
     const Eigen::Vector3d w = toEigen(parent.getAngularVelocity());
@@ -174,8 +169,10 @@ void assignParentMotion(const std::vector<btFractureRigidBody*>& fragments, cons
         for (std::size_t k = 0; k < n; ++k) {
             const Eigen::Matrix3d own = worldInertia(*fragments[k]);
             const Eigen::Vector3d r0 = before[k] - centreBefore, r1 = after[k] - centreAfter;
-            inertiaBefore += own + mass[k] * (r0.squaredNorm() * Eigen::Matrix3d::Identity() - r0 * r0.transpose());
-            inertiaAfter += own + mass[k] * (r1.squaredNorm() * Eigen::Matrix3d::Identity() - r1 * r1.transpose());
+            inertiaBefore +=
+                own + mass[k] * (r0.squaredNorm() * Eigen::Matrix3d::Identity() - r0 * r0.transpose());
+            inertiaAfter +=
+                own + mass[k] * (r1.squaredNorm() * Eigen::Matrix3d::Identity() - r1 * r1.transpose());
         }
         spin = inertiaAfter.ldlt().solve(inertiaBefore * w);
     }
@@ -262,7 +259,8 @@ void btFractureDynamicsWorld::removeRigidBody(btRigidBody* body) {
         --fractureBodies_;
     }
     // Whoever removes a world-owned fragment takes it.
-    const auto it = std::find_if(owned_.begin(), owned_.end(), [body](const auto& b) { return b.get() == body; });
+    const auto it =
+        std::find_if(owned_.begin(), owned_.end(), [body](const auto& b) { return b.get() == body; });
     if (it != owned_.end()) {
         it->release();
         owned_.erase(it);
@@ -297,14 +295,16 @@ void btFractureDynamicsWorld::collectTriggeredBodies() {
     for (int m = 0; m < manifolds; ++m) {
         const btPersistentManifold* manifold = m_dispatcher1->getManifoldByIndexInternal(m);
         if (manifold->getNumContacts() == 0) continue;  // most broadphase pairs: no body touched
-        btFractureRigidBody* bodies[2] = {fracturable(manifold->getBody0()), fracturable(manifold->getBody1())};
+        btFractureRigidBody* bodies[2] = {fracturable(manifold->getBody0()),
+                                          fracturable(manifold->getBody1())};
         if (!bodies[0] && !bodies[1]) continue;
         if (!wasSolved(*manifold)) continue;
         double impulse = 0.0;
         const btScalar threshold = manifold->getContactProcessingThreshold();
         for (int k = 0; k < manifold->getNumContacts(); ++k) {
             const btManifoldPoint& point = manifold->getContactPoint(k);
-            if (point.getDistance() <= threshold && point.m_appliedImpulse > 0) impulse += double(point.m_appliedImpulse);
+            if (point.getDistance() <= threshold && point.m_appliedImpulse > 0)
+                impulse += double(point.m_appliedImpulse);
         }
         for (btFractureRigidBody* body : bodies) {
             if (!body) continue;
@@ -318,11 +318,13 @@ void btFractureDynamicsWorld::collectTriggeredBodies() {
     }
     stats_.bodiesChecked += touched_.size();
     for (btFractureRigidBody* body : touched_)
-        if (body->impulseSum_ >= body->settings().impulseThreshold && body->impulseSum_ > 0.0) triggered_.push_back(body);
+        if (body->impulseSum_ >= body->settings().impulseThreshold && body->impulseSum_ > 0.0)
+            triggered_.push_back(body);
     stats_.bodiesTriggered += triggered_.size();
 }
 
-bool btFractureDynamicsWorld::buildContacts(btFractureRigidBody& body, std::vector<BodyContact>& contacts) const {
+bool btFractureDynamicsWorld::buildContacts(btFractureRigidBody& body,
+                                            std::vector<BodyContact>& contacts) const {
     contacts.clear();
     const RigidBodySnapshot::Entry* self = snapshot_.find(&body);
     if (!self) return false;
@@ -362,14 +364,15 @@ bool btFractureDynamicsWorld::buildContacts(btFractureRigidBody& body, std::vect
                                 toEigen(otherState->angularVelocity)
                                     .cross(otherPoint - toEigen(otherState->transform.getOrigin()));
             else if (otherRigid)
-                otherVelocity = toEigen(otherRigid->getVelocityInLocalPoint(toBullet(otherPoint) - otherTransform.getOrigin()));
+                otherVelocity = toEigen(
+                    otherRigid->getVelocityInLocalPoint(toBullet(otherPoint) - otherTransform.getOrigin()));
             const double approach = std::max(0.0, (otherVelocity - selfVelocity).dot(worldDirection));
 
-            HertzBody a{body.material().youngsModulus(), body.material().poissonRatio(), double(body.getInvMass()),
-                        body.meanCurvatureAt(selfLocal)};
+            HertzBody a{body.material().youngsModulus(), body.material().poissonRatio(),
+                        double(body.getInvMass()), engine_->meanCurvature(body, selfLocal)};
             HertzBody b{otherMaterial.youngsModulus(), otherMaterial.poissonRatio(),
                         otherRigid ? double(otherRigid->getInvMass()) : 0.0,
-                        otherFracture ? otherFracture->meanCurvatureAt(otherLocal)
+                        otherFracture ? engine_->meanCurvature(*otherFracture, otherLocal)
                                       : shapeMeanCurvature(*other->getCollisionShape(), otherLocal)};
             if (a.inverseMass + b.inverseMass <= 0.0) continue;  // static against static: no impact
             const HertzImpact hertz = hertzImpact(a, b, approach, body.characteristicLength());
@@ -412,6 +415,7 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             Timer timer;
             event.outcome = engine_->fracture(*body, contacts, stats_);
             event.info.engineSeconds = timer.seconds();
+            event.info.engineTimings = event.outcome.timings;
             for (std::size_t k = 0; k < event.outcome.fragments.size(); ++k)
                 validateSpec(event.outcome.fragments[k], body->name() + ": fragment " + std::to_string(k));
         } catch (const Error& error) {
@@ -452,9 +456,9 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
     const SeparationResult pushes = separateOverlaps(separation);
     std::size_t index = 0;
     for (Event& event : events) {
-        const std::vector<Eigen::Vector3d> eventPushes(pushes.pushes.begin() + static_cast<std::ptrdiff_t>(index),
-                                                       pushes.pushes.begin() +
-                                                           static_cast<std::ptrdiff_t>(index + event.fragments.size()));
+        const std::vector<Eigen::Vector3d> eventPushes(
+            pushes.pushes.begin() + static_cast<std::ptrdiff_t>(index),
+            pushes.pushes.begin() + static_cast<std::ptrdiff_t>(index + event.fragments.size()));
         index += event.fragments.size();
         assignParentMotion(event.fragments, eventPushes, *event.parent);
         event.info.maxSeparationPush = pushes.largestPush;
@@ -469,7 +473,8 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
         const btBroadphaseProxy* proxy = parent->getBroadphaseHandle();
         const int group = proxy ? proxy->m_collisionFilterGroup : int(btBroadphaseProxy::DefaultFilter);
         const int mask = proxy ? proxy->m_collisionFilterMask : int(btBroadphaseProxy::AllFilter);
-        const auto owned = std::find_if(owned_.begin(), owned_.end(), [parent](const auto& b) { return b.get() == parent; });
+        const auto owned =
+            std::find_if(owned_.begin(), owned_.end(), [parent](const auto& b) { return b.get() == parent; });
         if (owned != owned_.end()) {
             retired.push_back(std::move(*owned));
             owned_.erase(owned);
@@ -482,7 +487,8 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
     }
     for (Event& event : events) event.info.swapSeconds = swapTimer.seconds();
     for (Event& event : events)
-        for (FractureListener* listener : listeners_) listener->onFractureEvent(*event.parent, event.fragments, event.info);
+        for (FractureListener* listener : listeners_)
+            listener->onFractureEvent(*event.parent, event.fragments, event.info);
     retired.clear();
 
     replaying_ = true;
@@ -507,24 +513,29 @@ std::vector<btFractureRigidBody*> btFractureDynamicsWorld::spawnFragments(btFrac
         mesh.name = parent.name() + "_" + std::to_string(k);
         for (auto& v : mesh.vertices) v = axes.rotation.transpose() * (v - spec.centreOfMass);
 
-        const bool breaks = spec.cls == FragmentSpec::Class::Breakable || spec.cls == FragmentSpec::Class::KeepsParentSolver;
+        const bool breaks =
+            spec.cls == FragmentSpec::Class::Breakable || spec.cls == FragmentSpec::Class::KeepsParentSolver;
         FractureBodySettings settings = parentSettings;
         // A new generation, except the > 95 % piece, which continues its parent (§5.2 (d)).
-        if (spec.cls != FragmentSpec::Class::KeepsParentSolver) settings.refractureDepth = parentSettings.refractureDepth + 1;
+        if (spec.cls != FragmentSpec::Class::KeepsParentSolver)
+            settings.refractureDepth = parentSettings.refractureDepth + 1;
         settings.fracturable = breaks && parentSettings.fracturable;
 
         const CollisionShapeKind kind = spec.cls == FragmentSpec::Class::ConvexHull || isConvex(mesh)
                                             ? CollisionShapeKind::ConvexHull
                                             : parentSettings.concaveShapeKind;
         auto shape = buildCollisionShape(mesh, kind, parentSettings.shapeOptions);
-        const btTransform local(toBullet(axes.rotation), toBullet(spec.centreOfMass));
-        auto body = std::make_unique<btFractureRigidBody>(parent.material(), std::move(mesh), std::move(shape), spec.volume,
-                                                          axes.moments, parent.originalVolume(), settings,
-                                                          parentTransform * local);
+        const btTransform local = toBullet(axes.rotation, spec.centreOfMass);
+        auto body = std::make_unique<btFractureRigidBody>(
+            parent.material(), std::move(mesh), std::move(shape), spec.volume, axes.moments,
+            parent.originalVolume(), settings, parentTransform * local);
         if (spec.cls == FragmentSpec::Class::KeepsParentSolver) {
-            if (!parentStateTaken) body->setFractureState(parent.releaseFractureState());
-            else logf(LogLevel::Warning, parent.name(), ": more than one fragment claims to keep the parent's solver; ",
-                      body->name(), " starts without state");
+            if (!parentStateTaken)
+                body->setFractureState(parent.releaseFractureState());
+            else
+                logf(LogLevel::Warning, parent.name(),
+                     ": more than one fragment claims to keep the parent's solver; ", body->name(),
+                     " starts without state");
             parentStateTaken = true;
         } else if (spec.cls == FragmentSpec::Class::Breakable) {
             body->setFractureState(std::move(spec.carriedState));
@@ -535,7 +546,8 @@ std::vector<btFractureRigidBody*> btFractureDynamicsWorld::spawnFragments(btFrac
         body->setSpinningFriction(parent.getSpinningFriction());
         body->setRestitution(parent.getRestitution());
         body->setDamping(parent.getLinearDamping(), parent.getAngularDamping());
-        body->setSleepingThresholds(parent.getLinearSleepingThreshold(), parent.getAngularSleepingThreshold());
+        body->setSleepingThresholds(parent.getLinearSleepingThreshold(),
+                                    parent.getAngularSleepingThreshold());
         body->setFlags(parent.getFlags());
         body->setCollisionFlags(parent.getCollisionFlags());
         body->setUserPointer(parent.getUserPointer());

@@ -16,7 +16,10 @@
 //     sum. Manifolds without a fracturable body cost two tag compares; nothing is allocated.
 //  4. Cheap trigger: bodies whose sum stays under settings().impulseThreshold are done. For the
 //     others, the contacts are converted to BodyContact (body frame; approach speed from the
-//     pre-step velocities; Hertz duration, HertzContact.h) and FractureEngine::fracture() runs.
+//     pre-step velocities, i.e. before the solver changed them; Hertz duration, HertzContact.h,
+//     with curvatures from FractureEngine::meanCurvature or, for plain bodies, from their Bullet
+//     shape, ContactCurvature.h; materials: the body's, or defaultMaterial() for plain bodies)
+//     and FractureEngine::fracture() runs.
 //  5. If any body broke: restore the snapshot, remove the parents (Bullet drops their contact
 //     manifolds with their broadphase pairs), add the fragments with the parent's pre-step rigid
 //     motion (v + w x r, same w), push overlapping fragments apart (FragmentSeparation.h),
@@ -55,7 +58,8 @@ class btFractureRigidBody;
 class btFractureDynamicsWorld : public btDiscreteDynamicsWorld {
 public:
     btFractureDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* pairCache,
-                            btConstraintSolver* constraintSolver, btCollisionConfiguration* collisionConfiguration);
+                            btConstraintSolver* constraintSolver,
+                            btCollisionConfiguration* collisionConfiguration);
     ~btFractureDynamicsWorld() override;
 
     // The world owns its engine. nullptr (the default) means fracture never happens (logged once).
@@ -108,8 +112,8 @@ private:
     int fractureBodies_ = 0;  // btFractureRigidBody instances currently in the world
 
     RigidBodySnapshot snapshot_;
-    std::vector<btFractureRigidBody*> touched_;    // fracturable bodies with contacts this step
-    std::vector<btFractureRigidBody*> triggered_;  // ... whose impulse sum reached the threshold
+    std::vector<btFractureRigidBody*> touched_;                // fracturable bodies with contacts this step
+    std::vector<btFractureRigidBody*> triggered_;              // ... whose impulse sum reached the threshold
     std::vector<std::unique_ptr<btFractureRigidBody>> owned_;  // fragments in the world, creation order
 };
 

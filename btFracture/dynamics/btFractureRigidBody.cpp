@@ -1,10 +1,11 @@
 #include <btFracture/dynamics/btFractureRigidBody.h>
 
 #include <btFracture/core/Error.h>
+#include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
+#include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/ContactCurvature.h>
 #include <btFracture/dynamics/ConvexHullMesh.h>
-#include <btFracture/core/MassProperties.h>
 
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
@@ -26,37 +27,30 @@ struct btFractureRigidBody::Prepared {
 
 namespace {
 
-btTransform toBullet(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& origin) {
-    btMatrix3x3 basis(btScalar(rotation(0, 0)), btScalar(rotation(0, 1)), btScalar(rotation(0, 2)),
-                      btScalar(rotation(1, 0)), btScalar(rotation(1, 1)), btScalar(rotation(1, 2)),
-                      btScalar(rotation(2, 0)), btScalar(rotation(2, 1)), btScalar(rotation(2, 2)));
-    return btTransform(basis, btVector3(btScalar(origin.x()), btScalar(origin.y()), btScalar(origin.z())));
+std::string nameOr(const std::string& name, const char* fallback) {
+    return name.empty() ? std::string(fallback) : name;
 }
-
-std::string nameOr(const std::string& name, const char* fallback) { return name.empty() ? std::string(fallback) : name; }
 
 TriangleMesh hullMeshOf(const btConvexHullShape& hull) {
     std::vector<Eigen::Vector3d> points;
     const btVector3 scaling = hull.getLocalScaling();
-    for (int i = 0; i < hull.getNumPoints(); ++i) {
-        const btVector3 p = hull.getUnscaledPoints()[i] * scaling;
-        points.emplace_back(double(p.x()), double(p.y()), double(p.z()));
-    }
+    for (int i = 0; i < hull.getNumPoints(); ++i)
+        points.push_back(toEigen(hull.getUnscaledPoints()[i] * scaling));
     return convexHullMesh(points, "btConvexHullShape");
 }
 
 }  // namespace
 
 btRigidBody::btRigidBodyConstructionInfo btFractureRigidBody::constructionInfo(const Prepared& p,
-                                                                           const Material& material) {
-    btRigidBody::btRigidBodyConstructionInfo info(
-        btScalar(p.volume * material.density()), nullptr, p.shape->shape(),
-        btVector3(btScalar(p.principalInertia.x()), btScalar(p.principalInertia.y()), btScalar(p.principalInertia.z())));
+                                                                               const Material& material) {
+    btRigidBody::btRigidBodyConstructionInfo info(btScalar(p.volume * material.density()), nullptr,
+                                                  p.shape->shape(), toBullet(p.principalInertia));
     info.m_startWorldTransform = p.worldTransform;
     return info;
 }
 
-btFractureRigidBody::Prepared btFractureRigidBody::prepareModelMesh(TriangleMesh mesh, const Material& material,
+btFractureRigidBody::Prepared btFractureRigidBody::prepareModelMesh(TriangleMesh mesh,
+                                                                    const Material& material,
                                                                     const FractureBodySettings& settings,
                                                                     const btTransform& modelTransform) {
     mesh.name = nameOr(mesh.name, "btFractureRigidBody");
@@ -73,13 +67,15 @@ btFractureRigidBody::Prepared btFractureRigidBody::prepareModelMesh(TriangleMesh
     p.principalInertia = material.density() * axes.moments;
     p.bodyInModelFrame = toBullet(axes.rotation, mp.centreOfMass);
     p.worldTransform = modelTransform * p.bodyInModelFrame;
-    const CollisionShapeKind kind = isConvex(mesh) ? CollisionShapeKind::ConvexHull : settings.concaveShapeKind;
+    const CollisionShapeKind kind =
+        isConvex(mesh) ? CollisionShapeKind::ConvexHull : settings.concaveShapeKind;
     p.shape = buildCollisionShape(mesh, kind, settings.shapeOptions);
     p.mesh = std::move(mesh);
     return p;
 }
 
-btFractureRigidBody::btFractureRigidBody(Prepared p, const Material& material, const FractureBodySettings& settings)
+btFractureRigidBody::btFractureRigidBody(Prepared p, const Material& material,
+                                         const FractureBodySettings& settings)
     : btRigidBody(constructionInfo(p, material)),
       material_(material),
       mesh_(std::move(p.mesh)),
@@ -95,37 +91,39 @@ btFractureRigidBody::btFractureRigidBody(Prepared p, const Material& material, c
 }
 
 btFractureRigidBody::btFractureRigidBody(const Material& material, TriangleMesh modelMesh,
-                                         const FractureBodySettings& settings, const btTransform& modelTransform)
-    : btFractureRigidBody(prepareModelMesh(std::move(modelMesh), material, settings, modelTransform), material,
-                          settings) {}
+                                         const FractureBodySettings& settings,
+                                         const btTransform& modelTransform)
+    : btFractureRigidBody(prepareModelMesh(std::move(modelMesh), material, settings, modelTransform),
+                          material, settings) {}
 
 btFractureRigidBody::btFractureRigidBody(const Material& material, const btBoxShape& box,
                                          const FractureBodySettings& settings, const btTransform& transform)
-    : btFractureRigidBody(material,
-                          boxMesh(Eigen::Vector3d(double(box.getHalfExtentsWithMargin().x()),
-                                                  double(box.getHalfExtentsWithMargin().y()),
-                                                  double(box.getHalfExtentsWithMargin().z())),
-                                  "box"),
-                          settings, transform) {}
+    : btFractureRigidBody(material, boxMesh(toEigen(box.getHalfExtentsWithMargin()), "box"), settings,
+                          transform) {}
 
 btFractureRigidBody::btFractureRigidBody(const Material& material, const btConvexHullShape& hull,
-                                         const FractureBodySettings& settings, const btTransform& modelTransform)
+                                         const FractureBodySettings& settings,
+                                         const btTransform& modelTransform)
     : btFractureRigidBody(material, hullMeshOf(hull), settings, modelTransform) {}
 
 btFractureRigidBody::btFractureRigidBody(const Material& material, TriangleMesh bodyFrameMesh,
                                          std::unique_ptr<CollisionShapeStorage> shape, double volume,
                                          const Eigen::Vector3d& principalInertia, double originalVolume,
-                                         const FractureBodySettings& settings, const btTransform& worldTransform)
+                                         const FractureBodySettings& settings,
+                                         const btTransform& worldTransform)
     : btFractureRigidBody(
           [&]() {
               const std::string name = nameOr(bodyFrameMesh.name, "btFractureRigidBody fragment");
               std::ostringstream problem;
-              if (!shape) problem << "no collision shape";
-              else if (!(volume > 0.0) || !std::isfinite(volume)) problem << "volume " << volume << " m^3 (need > 0)";
+              if (!shape)
+                  problem << "no collision shape";
+              else if (!(volume > 0.0) || !std::isfinite(volume))
+                  problem << "volume " << volume << " m^3 (need > 0)";
               else if (!principalInertia.allFinite() || !(principalInertia.minCoeff() > 0.0))
                   problem << "principal inertia (" << principalInertia.transpose() << ") kg m^2 (need > 0)";
               else if (!(originalVolume >= volume * (1.0 - 1e-9)) || !std::isfinite(originalVolume))
-                  problem << "original volume " << originalVolume << " m^3 below the body's volume " << volume;
+                  problem << "original volume " << originalVolume << " m^3 below the body's volume "
+                          << volume;
               if (problem.tellp() > 0) throw Error(name + ": " + problem.str());
               Prepared p;
               p.mesh = std::move(bodyFrameMesh);

@@ -36,10 +36,12 @@ public:
     // Closed, outward-oriented mesh in model coordinates [m] (checked with requireClosedSolid;
     // an inside-out mesh is flipped with a warning). The collision shape is a shrunk convex hull
     // when the mesh is convex, else settings.concaveShapeKind.
-    btFractureRigidBody(const Material& material, TriangleMesh modelMesh, const FractureBodySettings& settings = {},
+    btFractureRigidBody(const Material& material, TriangleMesh modelMesh,
+                        const FractureBodySettings& settings = {},
                         const btTransform& modelTransform = btTransform::getIdentity());
     // A box: surface meshed with 12 triangles; body frame = box frame.
-    btFractureRigidBody(const Material& material, const btBoxShape& box, const FractureBodySettings& settings = {},
+    btFractureRigidBody(const Material& material, const btBoxShape& box,
+                        const FractureBodySettings& settings = {},
                         const btTransform& transform = btTransform::getIdentity());
     // A convex hull shape (local scaling applied): its hull is meshed with btConvexHullComputer.
     btFractureRigidBody(const Material& material, const btConvexHullShape& hull,
@@ -48,8 +50,9 @@ public:
     // A mesh already in its body frame (centre of mass at the origin, principal axes), with its
     // shape, volume [m^3], principal moments [kg m^2] and the root body's volume (fragment classes,
     // §5.2). Used for fragments. Throws when the data are inconsistent.
-    btFractureRigidBody(const Material& material, TriangleMesh bodyFrameMesh, std::unique_ptr<CollisionShapeStorage> shape,
-                        double volume, const Eigen::Vector3d& principalInertia, double originalVolume,
+    btFractureRigidBody(const Material& material, TriangleMesh bodyFrameMesh,
+                        std::unique_ptr<CollisionShapeStorage> shape, double volume,
+                        const Eigen::Vector3d& principalInertia, double originalVolume,
                         const FractureBodySettings& settings, const btTransform& worldTransform);
     ~btFractureRigidBody() override;
 
@@ -59,8 +62,9 @@ public:
     // nullptr unless `object` is a btFractureRigidBody (a tag test, no dynamic_cast: the body
     // marks itself through Bullet's extension pointer, reserved for Bullet extensions).
     static btFractureRigidBody* upcast(btCollisionObject* object) {
-        return object && object->internalGetExtensionPointer() == object ? static_cast<btFractureRigidBody*>(object)
-                                                                          : nullptr;
+        return object && object->internalGetExtensionPointer() == object
+                   ? static_cast<btFractureRigidBody*>(object)
+                   : nullptr;
     }
     static const btFractureRigidBody* upcast(const btCollisionObject* object) {
         return upcast(const_cast<btCollisionObject*>(object));
@@ -96,8 +100,8 @@ private:
     friend class btFractureDynamicsWorld;
     struct Prepared;
     btFractureRigidBody(Prepared prepared, const Material& material, const FractureBodySettings& settings);
-    static Prepared prepareModelMesh(TriangleMesh mesh, const Material& material, const FractureBodySettings& settings,
-                                     const btTransform& modelTransform);
+    static Prepared prepareModelMesh(TriangleMesh mesh, const Material& material,
+                                     const FractureBodySettings& settings, const btTransform& modelTransform);
     static btRigidBodyConstructionInfo constructionInfo(const Prepared& prepared, const Material& material);
 
     Material material_;
@@ -112,9 +116,9 @@ private:
     std::vector<double> vertexCurvature_;
 
     // Scratch of btFractureDynamicsWorld's step hook (no allocation per step).
-    std::uint64_t hookStamp_ = 0;  // step in which impulseSum_ was last reset
-    double impulseSum_ = 0.0;      // summed normal impulse of that step [N s]
-    bool inFractureWorld_ = false; // counted by a btFractureDynamicsWorld
+    std::uint64_t hookStamp_ = 0;   // step in which impulseSum_ was last reset
+    double impulseSum_ = 0.0;       // summed normal impulse of that step [N s]
+    bool inFractureWorld_ = false;  // counted by a btFractureDynamicsWorld
 };
 
 }  // namespace btfracture

@@ -46,7 +46,8 @@ CcdPolytope prepare(const ConvexPolytope& shape, const char* which) {
     std::ostringstream problem;
     if (shape.points.empty()) problem << "convexPenetration: polytope " << which << " has no points";
     if (!(shape.margin >= 0.0) || !std::isfinite(shape.margin))
-        problem << "convexPenetration: polytope " << which << " has margin " << shape.margin << " (need >= 0)";
+        problem << "convexPenetration: polytope " << which << " has margin " << shape.margin
+                << " (need >= 0)";
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (const auto& p : shape.points) {
         if (!p.allFinite()) {
@@ -72,7 +73,8 @@ Penetration convexPenetration(const ConvexPolytope& a, const ConvexPolytope& b) 
     // Tolerances relative to the operands' size (libccd's defaults are absolute, 1e-4).
     double scale = a.margin + b.margin;
     for (const ConvexPolytope* shape : {&a, &b})
-        for (const auto& p : shape->points) scale = std::max(scale, (p - (shape == &a ? pa.centre : pb.centre)).norm());
+        for (const auto& p : shape->points)
+            scale = std::max(scale, (p - (shape == &a ? pa.centre : pb.centre)).norm());
     ccd.max_iterations = 500;
     ccd.epa_tolerance = 1e-8 * scale;
     ccd.mpr_tolerance = 1e-8 * scale;

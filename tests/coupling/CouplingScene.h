@@ -19,8 +19,8 @@ namespace btfracture::test {
 constexpr double kStep = 1.0 / 240.0;
 
 struct SceneOptions {
-    double impulseThreshold = 10.0;  // [N s]
-    double ballSpeed = 10.0;         // [m/s], downwards
+    double impulseThreshold = 10.0;     // [N s]
+    double ballSpeed = 10.0;            // [m/s], downwards
     double ballX = 0.05, ballZ = 0.03;  // where the ball hits the slab's top face [m]
     int maxRefractureDepth = 2;
     bool withEngine = true;
@@ -40,7 +40,9 @@ struct WorldProbe {
     int bodies = 0;
 };
 
-inline Eigen::Vector3d eig(const btVector3& v) { return Eigen::Vector3d(double(v.x()), double(v.y()), double(v.z())); }
+inline Eigen::Vector3d eig(const btVector3& v) {
+    return Eigen::Vector3d(double(v.x()), double(v.y()), double(v.z()));
+}
 
 inline WorldProbe probe(btDiscreteDynamicsWorld& world) {
     WorldProbe p;
@@ -76,20 +78,24 @@ public:
         btTransform t;
         t.setIdentity();
         t.setOrigin(btVector3(0, btScalar(-0.5), 0));
-        ground = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &groundShape));
+        ground =
+            std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &groundShape));
         ground->setWorldTransform(t);
         world->addRigidBody(ground.get());
 
         FractureBodySettings settings;
         settings.impulseThreshold = options.impulseThreshold;
         settings.maxRefractureDepth = options.maxRefractureDepth;
-        const btBoxShape slabShape(btVector3(btScalar(options.slabHalfExtents.x()), btScalar(options.slabHalfExtents.y()),
+        const btBoxShape slabShape(btVector3(btScalar(options.slabHalfExtents.x()),
+                                             btScalar(options.slabHalfExtents.y()),
                                              btScalar(options.slabHalfExtents.z())));
         t.setOrigin(btVector3(0, btScalar(options.slabHalfExtents.y() + lift), 0));
         slab = std::make_unique<btFractureRigidBody>(Material::glass(), slabShape, settings, t);
-        slab->setLinearVelocity(btVector3(btScalar(options.slabVelocity.x()), btScalar(options.slabVelocity.y()),
+        slab->setLinearVelocity(btVector3(btScalar(options.slabVelocity.x()),
+                                          btScalar(options.slabVelocity.y()),
                                           btScalar(options.slabVelocity.z())));
-        slab->setAngularVelocity(btVector3(btScalar(options.slabAngularVelocity.x()), btScalar(options.slabAngularVelocity.y()),
+        slab->setAngularVelocity(btVector3(btScalar(options.slabAngularVelocity.x()),
+                                           btScalar(options.slabAngularVelocity.y()),
                                            btScalar(options.slabAngularVelocity.z())));
         slab->setFriction(btScalar(0.6));
         world->addRigidBody(slab.get());
@@ -98,8 +104,10 @@ public:
         const btScalar mass = btScalar(7850.0 * 4.0 / 3.0 * M_PI * double(radius * radius * radius));
         btVector3 inertia;
         ballShape.calculateLocalInertia(mass, inertia);
-        ball = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(mass, nullptr, &ballShape, inertia));
-        t.setOrigin(btVector3(btScalar(options.ballX), btScalar(2.0 * options.slabHalfExtents.y() + lift + 0.05 + 0.03),
+        ball = std::make_unique<btRigidBody>(
+            btRigidBody::btRigidBodyConstructionInfo(mass, nullptr, &ballShape, inertia));
+        t.setOrigin(btVector3(btScalar(options.ballX),
+                              btScalar(2.0 * options.slabHalfExtents.y() + lift + 0.05 + 0.03),
                               btScalar(options.ballZ)));
         ball->setWorldTransform(t);
         ball->setLinearVelocity(btVector3(0, btScalar(-options.ballSpeed), 0));
@@ -108,7 +116,8 @@ public:
 
     ~Scene() {
         // App-added bodies leave the world before it goes; world-owned fragments go with it.
-        for (btRigidBody* body : {static_cast<btRigidBody*>(ball.get()), static_cast<btRigidBody*>(slab.get()), ground.get()})
+        for (btRigidBody* body :
+             {static_cast<btRigidBody*>(ball.get()), static_cast<btRigidBody*>(slab.get()), ground.get()})
             if (body && body->isInWorld()) world->removeRigidBody(body);
         world.reset();
     }

@@ -13,7 +13,8 @@ namespace btfracture::test {
 // Prism of a counter-clockwise polygon (x, y) from z = -h to +h. The caps are fanned from
 // polygon vertex `fanFrom`, which must see the whole polygon (any vertex of a convex polygon, the
 // reflex vertex of an L).
-inline TriangleMesh prism(const std::vector<Eigen::Vector2d>& polygon, double h, int fanFrom, const std::string& name) {
+inline TriangleMesh prism(const std::vector<Eigen::Vector2d>& polygon, double h, int fanFrom,
+                          const std::string& name) {
     TriangleMesh m;
     m.name = name;
     const int n = static_cast<int>(polygon.size());
@@ -45,7 +46,8 @@ inline TriangleMesh torus(double R, double r, int major, int minor) {
         const double u = 2.0 * M_PI * i / major;
         for (int j = 0; j < minor; ++j) {
             const double v = 2.0 * M_PI * j / minor;
-            m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+            m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
+                                    r * std::sin(v));
         }
     }
     auto id = [&](int i, int j) { return (i % major) * minor + (j % minor); };

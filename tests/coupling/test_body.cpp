@@ -6,14 +6,16 @@
 
 #include <btBulletDynamicsCommon.h>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 using namespace btfracture;
 
 namespace {
 
-Eigen::Vector3d eig(const btVector3& v) { return Eigen::Vector3d(double(v.x()), double(v.y()), double(v.z())); }
+Eigen::Vector3d eig(const btVector3& v) {
+    return Eigen::Vector3d(double(v.x()), double(v.y()), double(v.z()));
+}
 
 }  // namespace
 
@@ -27,7 +29,8 @@ TEST(FractureBody, BoxHasExactMassAndInertia) {
     EXPECT_NEAR(body.volume(), volume, 1e-6 * volume);  // float half extents in a float build
     EXPECT_NEAR(1.0 / double(body.getInvMass()), mass, 1e-5 * mass);
     // Principal moments m/12 (b^2 + c^2), ascending order in the body frame.
-    const Eigen::Vector3d expected = mass / 12.0 * Eigen::Vector3d(0.4 * 0.4 + 0.1 * 0.1, 0.4 * 0.4 + 0.2 * 0.2, 0.1 * 0.1 + 0.2 * 0.2);
+    const Eigen::Vector3d expected =
+        mass / 12.0 * Eigen::Vector3d(0.4 * 0.4 + 0.1 * 0.1, 0.4 * 0.4 + 0.2 * 0.2, 0.1 * 0.1 + 0.2 * 0.2);
     Eigen::Vector3d sorted = expected;
     std::sort(sorted.data(), sorted.data() + 3);
     EXPECT_LT((eig(body.getInvInertiaDiagLocal()).cwiseInverse() - sorted).norm(), 1e-5 * sorted.norm());
@@ -55,9 +58,10 @@ TEST(FractureBody, OffsetMeshIsRecentredAndPlaced) {
     EXPECT_LT((eig(body.getWorldTransform().getOrigin()) - (com + Eigen::Vector3d(0, 1, 0))).norm(), 1e-6);
     // Mapping the body mesh back to the model frame gives the input mesh.
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-        const Eigen::Vector3d back = eig(body.bodyInModelFrame() * btVector3(btScalar(body.mesh().vertices[i].x()),
-                                                                              btScalar(body.mesh().vertices[i].y()),
-                                                                              btScalar(body.mesh().vertices[i].z())));
+        const Eigen::Vector3d back =
+            eig(body.bodyInModelFrame() * btVector3(btScalar(body.mesh().vertices[i].x()),
+                                                    btScalar(body.mesh().vertices[i].y()),
+                                                    btScalar(body.mesh().vertices[i].z())));
         EXPECT_LT((back - mesh.vertices[i]).norm(), 1e-6);
     }
 }
@@ -81,7 +85,8 @@ TEST(FractureBody, CurvatureProxy) {
         for (int i = 1; i < rings; ++i)
             for (int j = 0; j < segments; ++j) {
                 const double th = M_PI * i / rings, ph = 2 * M_PI * j / segments;
-                sphere.vertices.push_back({r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph), r * std::cos(th)});
+                sphere.vertices.push_back(
+                    {r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph), r * std::cos(th)});
             }
         sphere.vertices.push_back({0, 0, -r});
         const int south = static_cast<int>(sphere.vertices.size()) - 1;
@@ -92,7 +97,8 @@ TEST(FractureBody, CurvatureProxy) {
                 sphere.triangles.push_back({ring(i, j), ring(i + 1, j), ring(i + 1, j + 1)});
                 sphere.triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)});
             }
-        for (int j = 0; j < segments; ++j) sphere.triangles.push_back({south, ring(rings - 1, j + 1), ring(rings - 1, j)});
+        for (int j = 0; j < segments; ++j)
+            sphere.triangles.push_back({south, ring(rings - 1, j + 1), ring(rings - 1, j)});
         sphere.name = "sphere";
     }
     btFractureRigidBody ball(Material::glass(), sphere);

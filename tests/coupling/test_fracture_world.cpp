@@ -35,7 +35,9 @@ struct SwapProbe : FractureListener {
     FractureEventInfo lastInfo;
 };
 
-double relative(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double scale) { return (a - b).norm() / scale; }
+double relative(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double scale) {
+    return (a - b).norm() / scale;
+}
 
 }  // namespace
 
@@ -75,7 +77,8 @@ TEST(FractureWorld, ContactsReachTheEngineInTheBodyFrame) {
     struct Recorder : FractureEngine {
         std::vector<BodyContact> contacts;
         double mass = 0.0;
-        FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>& c, FractureStatistics&) override {
+        FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>& c,
+                                 FractureStatistics&) override {
             if (contacts.empty()) {
                 contacts = c;
                 mass = 1.0 / double(body.getInvMass());
@@ -96,19 +99,24 @@ TEST(FractureWorld, ContactsReachTheEngineInTheBodyFrame) {
     const BodyContact* ball = &rec->contacts.front();
     for (const BodyContact& c : rec->contacts)
         if (c.approachSpeed > ball->approachSpeed) ball = &c;
-    const Eigen::Vector3d worldPoint = eig(slabPose * btVector3(btScalar(ball->point.x()), btScalar(ball->point.y()), btScalar(ball->point.z())));
+    const Eigen::Vector3d worldPoint =
+        eig(slabPose *
+            btVector3(btScalar(ball->point.x()), btScalar(ball->point.y()), btScalar(ball->point.z())));
     EXPECT_NEAR(worldPoint.x(), 0.05, 1e-3);
     EXPECT_NEAR(worldPoint.y(), 0.05, 2e-3);
     EXPECT_NEAR(worldPoint.z(), 0.03, 1e-3);
-    const Eigen::Vector3d worldDirection = eig(slabPose.getBasis() * btVector3(btScalar(ball->direction.x()), btScalar(ball->direction.y()), btScalar(ball->direction.z())));
+    const Eigen::Vector3d worldDirection =
+        eig(slabPose.getBasis() * btVector3(btScalar(ball->direction.x()), btScalar(ball->direction.y()),
+                                            btScalar(ball->direction.z())));
     EXPECT_LT((worldDirection - Eigen::Vector3d(0, -1, 0)).norm(), 1e-3);
     EXPECT_NEAR(ball->approachSpeed, 10.0, 0.05);  // 10 m/s plus at most one step of gravity
     EXPECT_GT(ball->impulse, 10.0);
     // Hertz: steel ball (r 5 cm) on glass, flat-ish face capped at the slab size.
     const double ballMass = 1.0 / double(scene.ball->getInvMass());
-    const HertzImpact h = hertzImpact(HertzBody{70e9, 0.22, 1.0 / rec->mass, scene.slab->meanCurvatureAt(ball->point)},
-                                      HertzBody{210e9, 0.3, 1.0 / ballMass, 1.0 / 0.05}, ball->approachSpeed,
-                                      scene.slab->characteristicLength());
+    const HertzImpact h =
+        hertzImpact(HertzBody{70e9, 0.22, 1.0 / rec->mass, scene.slab->meanCurvatureAt(ball->point)},
+                    HertzBody{210e9, 0.3, 1.0 / ballMass, 1.0 / 0.05}, ball->approachSpeed,
+                    scene.slab->characteristicLength());
     EXPECT_NEAR(ball->duration, h.contactDuration, 1e-12);
     EXPECT_NEAR(ball->effectiveMass, 1.0 / (1.0 / rec->mass + 1.0 / ballMass), 1e-6);
     EXPECT_GT(ball->duration, 1e-6);
@@ -116,7 +124,9 @@ TEST(FractureWorld, ContactsReachTheEngineInTheBodyFrame) {
     // Resting contacts with the ground point up into the slab and have the floored speed's duration.
     int groundContacts = 0;
     for (const BodyContact& c : rec->contacts) {
-        const Eigen::Vector3d d = eig(slabPose.getBasis() * btVector3(btScalar(c.direction.x()), btScalar(c.direction.y()), btScalar(c.direction.z())));
+        const Eigen::Vector3d d =
+            eig(slabPose.getBasis() *
+                btVector3(btScalar(c.direction.x()), btScalar(c.direction.y()), btScalar(c.direction.z())));
         if (d.y() > 0.99) ++groundContacts;
     }
     EXPECT_GE(groundContacts, 1);
@@ -206,11 +216,12 @@ TEST(FractureWorld, SwapConservesMassMomentumAndDoesNotPop) {
                 << swap.angular.transpose() << " vs " << before.angular.transpose();
             // No popping: the replayed step adds no more than 1 % kinetic energy.
             EXPECT_LE(after.kinetic, 1.01 * before.kinetic) << after.kinetic << " vs " << before.kinetic;
-            std::printf("swap (variant %d, ball x = %.2f): mass %.2e, momentum %.2e, angular momentum %.2e (relative "
-                        "differences); kinetic energy after replay / before = %.4f; largest push %.2e m\n",
-                        variant, ballX, std::abs(swap.mass - before.mass) / before.mass, relative(swap.linear, before.linear, pScale),
-                        relative(swap.angular, before.angular, lScale), after.kinetic / before.kinetic,
-                        listener.lastInfo.maxSeparationPush);
+            std::printf(
+                "swap (variant %d, ball x = %.2f): mass %.2e, momentum %.2e, angular momentum %.2e (relative "
+                "differences); kinetic energy after replay / before = %.4f; largest push %.2e m\n",
+                variant, ballX, std::abs(swap.mass - before.mass) / before.mass,
+                relative(swap.linear, before.linear, pScale), relative(swap.angular, before.angular, lScale),
+                after.kinetic / before.kinetic, listener.lastInfo.maxSeparationPush);
             EXPECT_LT(listener.lastInfo.maxSeparationPush, 1e-3);
         }
         EXPECT_EQ(listener.events, 1) << "variant " << variant;
@@ -289,7 +300,8 @@ namespace {
 class ChipEngine : public PlaneSplitFractureEngine {
 public:
     explicit ChipEngine(double fraction) : fraction_(fraction) {}
-    FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>&, FractureStatistics& stats) override {
+    FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>&,
+                             FractureStatistics& stats) override {
         ensureState(body, stats);
         Eigen::Vector3d lo = body.mesh().vertices.front(), hi = lo;
         for (const auto& v : body.mesh().vertices) {
@@ -309,7 +321,8 @@ private:
 
 struct FirstEvent : FractureListener {
     std::vector<btFractureRigidBody*> fragments;
-    void onFractureEvent(btFractureRigidBody&, const std::vector<btFractureRigidBody*>& f, const FractureEventInfo&) override {
+    void onFractureEvent(btFractureRigidBody&, const std::vector<btFractureRigidBody*>& f,
+                         const FractureEventInfo&) override {
         if (fragments.empty()) fragments = f;
     }
 };
@@ -323,8 +336,9 @@ TEST(FractureWorld, FragmentClassesAndRefractureDepth) {
     };
     // Chips of 2.5 %, 1.25 % and 0.25 % of the slab: breakable, mesh, convex hull (§5.2); the
     // rest (> 95 %) keeps the parent's solver.
-    for (const Case& c : {Case{0.025, FragmentSpec::Class::Breakable}, Case{0.0125, FragmentSpec::Class::Mesh},
-                          Case{0.0025, FragmentSpec::Class::ConvexHull}}) {
+    for (const Case& c :
+         {Case{0.025, FragmentSpec::Class::Breakable}, Case{0.0125, FragmentSpec::Class::Mesh},
+          Case{0.0025, FragmentSpec::Class::ConvexHull}}) {
         SceneOptions options;
         options.slabHalfExtents = Eigen::Vector3d(0.2, 0.025, 0.15);  // distinct principal axes
         Scene scene(options);
@@ -333,7 +347,8 @@ TEST(FractureWorld, FragmentClassesAndRefractureDepth) {
         scene.world->addFractureListener(&grab);
         for (int i = 0; i < 10 && grab.fragments.empty(); ++i) scene.step();
         ASSERT_EQ(grab.fragments.size(), 2u) << c.fraction;
-        btFractureRigidBody* big = grab.fragments[0]->volume() > grab.fragments[1]->volume() ? grab.fragments[0] : grab.fragments[1];
+        btFractureRigidBody* big =
+            grab.fragments[0]->volume() > grab.fragments[1]->volume() ? grab.fragments[0] : grab.fragments[1];
         btFractureRigidBody* small = big == grab.fragments[0] ? grab.fragments[1] : grab.fragments[0];
         EXPECT_NEAR(small->volume() / scene.slab->volume(), c.fraction, 1e-9);
         // The > 95 % piece keeps the parent's solver state (the stand-in's balancer) and depth.
@@ -378,8 +393,10 @@ TEST(FractureWorld, SplittingARestingSlabDoesNotPop) {
     // ~3 mm, pushed apart in one step) would be of order 0.1 J.
     EXPECT_LE(after.kinetic, 1.01 * before.kinetic + 5e-4) << before.kinetic << " -> " << after.kinetic;
     EXPECT_LT(peak, 5e-4);
-    std::printf("resting split: kinetic energy %.2e J before, %.2e J after the replayed step, peak %.2e J over 0.5 s\n",
-                before.kinetic, after.kinetic, peak);
+    std::printf(
+        "resting split: kinetic energy %.2e J before, %.2e J after the replayed step, peak %.2e J over 0.5 "
+        "s\n",
+        before.kinetic, after.kinetic, peak);
     for (btFractureRigidBody* f : scene.fragments())
         EXPECT_NEAR(double(f->getWorldTransform().getOrigin().y()), 0.025, 1e-3);
 }
@@ -427,7 +444,8 @@ TEST(FractureWorld, RefractureStopsAtMaxDepth) {
 
 TEST(FractureWorld, EngineErrorMakesBodyUnbreakable) {
     struct Failing : FractureEngine {
-        FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>&, FractureStatistics&) override {
+        FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>&,
+                                 FractureStatistics&) override {
             throw Error(body.name() + ": test engine refuses");
         }
     };

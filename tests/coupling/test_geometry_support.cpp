@@ -1,11 +1,11 @@
 // Principal axes of a mass-property tensor and libccd penetration (helpers the coupling uses).
 #include <btFracture/core/Error.h>
+#include <btFracture/core/MassProperties.h>
 #include <btFracture/dynamics/ConvexHullMesh.h>
 #include <btFracture/geometry/ConvexPenetration.h>
-#include <btFracture/core/MassProperties.h>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 using namespace btfracture;
 
@@ -20,15 +20,18 @@ TEST(PrincipalAxes, RotatedOffsetBoxIsExact) {
     EXPECT_NEAR(mp.volume, volume, 1e-12 * volume);  // integrated about the origin, 5 m away
     EXPECT_LT((mp.centreOfMass - offset).norm(), 1e-13);
     const Eigen::Vector3d d = 2.0 * h;
-    const Eigen::Vector3d moments = volume / 12.0 * Eigen::Vector3d(d.y() * d.y() + d.z() * d.z(),
-                                                                   d.x() * d.x() + d.z() * d.z(),
-                                                                   d.x() * d.x() + d.y() * d.y());
-    const Eigen::Matrix3d expected = rotation.toRotationMatrix() * moments.asDiagonal() * rotation.toRotationMatrix().transpose();
+    const Eigen::Vector3d moments =
+        volume / 12.0 *
+        Eigen::Vector3d(d.y() * d.y() + d.z() * d.z(), d.x() * d.x() + d.z() * d.z(),
+                        d.x() * d.x() + d.y() * d.y());
+    const Eigen::Matrix3d expected =
+        rotation.toRotationMatrix() * moments.asDiagonal() * rotation.toRotationMatrix().transpose();
     EXPECT_LT((mp.inertiaPerDensity - expected).norm(), 1e-10 * expected.norm());
 
     const PrincipalAxes axes = principalAxes(mp.inertiaPerDensity);
     EXPECT_NEAR(axes.rotation.determinant(), 1.0, 1e-12);
-    EXPECT_LT((axes.rotation * axes.moments.asDiagonal() * axes.rotation.transpose() - expected).norm(), 1e-10 * expected.norm());
+    EXPECT_LT((axes.rotation * axes.moments.asDiagonal() * axes.rotation.transpose() - expected).norm(),
+              1e-10 * expected.norm());
     Eigen::Vector3d sorted = moments;
     std::sort(sorted.data(), sorted.data() + 3);
     EXPECT_LT((axes.moments - sorted).norm(), 1e-10 * sorted.norm());

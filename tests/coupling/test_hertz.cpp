@@ -29,7 +29,8 @@ TEST(Hertz, TwoSteelBallsMatchValidationValues) {
     EXPECT_NEAR(h.effectiveRadius, 0.005, 1e-15);
     EXPECT_NEAR(h.effectiveModulus, 210e9 / (2.0 * 0.91), 1.0);
     // Consistency with the approach alpha* = (15 m v^2 / (16 E sqrt R))^(2/5): t_c = 2.9432 alpha*/v.
-    const double alpha = std::pow(15.0 * h.effectiveMass / (16.0 * h.effectiveModulus * std::sqrt(h.effectiveRadius)), 0.4);
+    const double alpha =
+        std::pow(15.0 * h.effectiveMass / (16.0 * h.effectiveModulus * std::sqrt(h.effectiveRadius)), 0.4);
     EXPECT_NEAR(alpha, 20.4e-6, 0.05e-6);
     EXPECT_NEAR(h.contactDuration, 2.9432 * alpha, 1e-4 * h.contactDuration);
 }
@@ -67,7 +68,8 @@ TEST(Hertz, LimitsAreFiniteAndPositive) {
     // Concave curvature counts as flat.
     HertzBody concave = flatBlock;
     concave.curvature = -50.0;
-    EXPECT_EQ(hertzImpact(concave, ground, 1.0, 0.1).contactDuration, hertzImpact(flatBlock, ground, 1.0, 0.1).contactDuration);
+    EXPECT_EQ(hertzImpact(concave, ground, 1.0, 0.1).contactDuration,
+              hertzImpact(flatBlock, ground, 1.0, 0.1).contactDuration);
     // Slight curvature below 1/cap is capped too.
     HertzBody gentle = flatBlock;
     gentle.curvature = 5.0;

@@ -1,12 +1,12 @@
 #include "TestMeshes.h"
 
+#include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/dynamics/ConvexHullMesh.h>
 #include <btFracture/dynamics/PlaneSplitFractureEngine.h>
-#include <btFracture/core/MassProperties.h>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 using namespace btfracture;
 
@@ -31,9 +31,12 @@ TEST(PlaneSplit, BoxHalvesAreClosedAndExact) {
     EXPECT_LT((ma.volume * ma.centreOfMass + mb.volume * mb.centreOfMass).norm(), 1e-14);
     auto shifted = [](const MassProperties& m) {
         const Eigen::Vector3d c = m.centreOfMass;
-        return Eigen::Matrix3d(m.inertiaPerDensity + m.volume * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose()));
+        return Eigen::Matrix3d(m.inertiaPerDensity +
+                               m.volume *
+                                   (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose()));
     };
-    EXPECT_LT((shifted(ma) + shifted(mb) - whole.inertiaPerDensity).norm(), 1e-12 * whole.inertiaPerDensity.norm());
+    EXPECT_LT((shifted(ma) + shifted(mb) - whole.inertiaPerDensity).norm(),
+              1e-12 * whole.inertiaPerDensity.norm());
 }
 
 TEST(PlaneSplit, AxisAlignedCutThroughVerticesAndMisses) {

@@ -1,11 +1,11 @@
 #include "TestMeshes.h"
 
+#include <btFracture/core/MassProperties.h>
 #include <btFracture/dynamics/CollisionShapeBuilder.h>
 #include <btFracture/dynamics/ConvexHullMesh.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
-#include <btFracture/core/MassProperties.h>
 
 #include <btBulletDynamicsCommon.h>
 
@@ -45,14 +45,16 @@ TEST(CollisionShapes, DecompositionCoversANonConvexMesh) {
     EXPECT_GT(volume, 0.6 * exact);  // shrunk by the margin
     // Above the triangle limit the decomposition falls back to GImpact (HACD would take seconds).
     const TriangleMesh ring = test::torus(0.1, 0.03, 32, 12);  // 768 triangles
-    EXPECT_EQ(buildCollisionShape(ring, CollisionShapeKind::ConvexDecomposition)->kind(), CollisionShapeKind::GImpactMesh);
+    EXPECT_EQ(buildCollisionShape(ring, CollisionShapeKind::ConvexDecomposition)->kind(),
+              CollisionShapeKind::GImpactMesh);
     const auto gimpact = buildCollisionShape(l, CollisionShapeKind::GImpactMesh);
     EXPECT_TRUE(gimpact->convexPieces().empty());
     EXPECT_EQ(gimpact->shape()->getShapeType(), GIMPACT_SHAPE_PROXYTYPE);
 }
 
 TEST(CollisionShapes, NonConvexBodiesRestStablyOnTheGround) {
-    for (const CollisionShapeKind kind : {CollisionShapeKind::ConvexDecomposition, CollisionShapeKind::GImpactMesh}) {
+    for (const CollisionShapeKind kind :
+         {CollisionShapeKind::ConvexDecomposition, CollisionShapeKind::GImpactMesh}) {
         btDefaultCollisionConfiguration config;
         btCollisionDispatcher dispatcher(&config);
         btDbvtBroadphase broadphase;

@@ -1,8 +1,8 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/dynamics/TractionBalance.h>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include <random>
 
@@ -20,7 +20,8 @@ TriangleMesh ellipsoid(int rings, int segments, const Eigen::Vector3d& radii) {
         for (int s = 0; s < segments; ++s) {
             const double phi = 2.0 * M_PI * s / segments;
             m.vertices.push_back(Eigen::Vector3d(radii.x() * std::sin(theta) * std::cos(phi),
-                                                 radii.y() * std::sin(theta) * std::sin(phi), radii.z() * std::cos(theta)));
+                                                 radii.y() * std::sin(theta) * std::sin(phi),
+                                                 radii.z() * std::cos(theta)));
         }
     }
     m.vertices.push_back(Eigen::Vector3d(0, 0, -radii.z()));
@@ -32,7 +33,8 @@ TriangleMesh ellipsoid(int rings, int segments, const Eigen::Vector3d& radii) {
             m.triangles.push_back({ring(r, s), ring(r + 1, s), ring(r + 1, s + 1)});
             m.triangles.push_back({ring(r, s), ring(r + 1, s + 1), ring(r, s + 1)});
         }
-    for (int s = 0; s < segments; ++s) m.triangles.push_back({south, ring(rings - 1, s + 1), ring(rings - 1, s)});
+    for (int s = 0; s < segments; ++s)
+        m.triangles.push_back({south, ring(rings - 1, s + 1), ring(rings - 1, s)});
     return m;
 }
 
@@ -123,7 +125,8 @@ TEST(TractionBalance, BalancedFieldIsUnchanged) {
     TractionField pressure(mesh.triangles.size());
     for (std::size_t e = 0; e < pressure.size(); ++e) {
         const auto& t = mesh.triangles[e];
-        const Eigen::Vector3d n = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+        const Eigen::Vector3d n =
+            (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
         pressure[e] = -1e5 * n.normalized();
     }
     const TractionField kept = balancer.balance(pressure);
