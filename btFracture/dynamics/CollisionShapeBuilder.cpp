@@ -1,0 +1,196 @@
+#include <btFracture/dynamics/CollisionShapeBuilder.h>
+
+#include <btFracture/core/Error.h>
+#include <btFracture/core/Log.h>
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/dynamics/BulletEigen.h>
+
+#include <BulletCollision/CollisionShapes/btCompoundShape.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
+#include <BulletCollision/Gimpact/btGImpactShape.h>
+#include <HACD/hacdHACD.h>
+#include <LinearMath/btConvexHullComputer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace btfracture {
+
+struct CollisionShapeStorage::Impl {
+    std::vector<std::unique_ptr<btCollisionShape>> children;
+    std::vector<btScalar> vertices;
+    std::vector<int> indices;
+    std::unique_ptr<btTriangleIndexVertexArray> meshInterface;
+    std::unique_ptr<btCollisionShape> root;  // declared last: destroyed before what it references
+};
+
+CollisionShapeStorage::CollisionShapeStorage() : impl_(std::make_unique<Impl>()) {}
+CollisionShapeStorage::~CollisionShapeStorage() = default;
+
+const char* toString(CollisionShapeKind kind) {
+    switch (kind) {
+        case CollisionShapeKind::ConvexHull:
+            return "convex hull";
+        case CollisionShapeKind::ConvexDecomposition:
+            return "convex decomposition";
+        case CollisionShapeKind::GImpactMesh:
+            return "GImpact mesh";
+    }
+    return "?";
+}
+
+namespace {
+
+std::string meshName(const TriangleMesh& mesh) {
+    return mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name;
+}
+
+// A btConvexHullShape whose hull is the hull of `points` shrunk by `margin` (clamped by Bullet
+// to a quarter of the inradius); returns its collision geometry (shrunk points + actual margin).
+std::unique_ptr<btConvexHullShape> shrunkHull(const std::vector<Eigen::Vector3d>& points, double margin,
+                                              const std::string& name, ConvexPolytope& piece) {
+    std::vector<double> coords;
+    coords.reserve(3 * points.size());
+    for (const auto& p : points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
+    btConvexHullComputer hull;
+    const double shrink = hull.compute(coords.data(), 3 * static_cast<int>(sizeof(double)),
+                                       static_cast<int>(points.size()), btScalar(margin), btScalar(0.25));
+    if (hull.vertices.size() < 4) {
+        std::ostringstream out;
+        out << name << ": convex hull of " << points.size() << " points has " << hull.vertices.size()
+            << " vertices (flat or degenerate piece)";
+        throw Error(out.str());
+    }
+    // Bullet clamps the shrink for thin pieces; the margin then follows the shrink actually
+    // applied so that hull + margin still matches the input.
+    const double actualMargin = shrink > 0.0 ? std::min(shrink, margin) : 0.0;
+    if (actualMargin < 0.5 * margin)
+        logf(LogLevel::Debug, name, ": collision margin reduced from ", margin, " to ", actualMargin,
+             " m for a thin convex piece");
+    auto shape = std::make_unique<btConvexHullShape>();
+    piece.points.clear();
+    for (int i = 0; i < hull.vertices.size(); ++i) {
+        shape->addPoint(hull.vertices[i], false);
+        piece.points.push_back(toEigen(hull.vertices[i]));
+    }
+    shape->setMargin(btScalar(actualMargin));
+    shape->recalcLocalAabb();
+    piece.margin = actualMargin;
+    return shape;
+}
+
+// HACD clusters of the mesh as point sets (HACD works in its own normalised [0, 1000] frame
+// and returns denormalised hull points).
+std::vector<std::vector<Eigen::Vector3d>> decompose(const TriangleMesh& mesh,
+                                                    const CollisionShapeOptions& options) {
+    std::vector<HACD::Vec3<HACD::Real>> points;
+    points.reserve(mesh.vertices.size());
+    for (const auto& v : mesh.vertices) points.emplace_back(v.x(), v.y(), v.z());
+    std::vector<HACD::Vec3<long>> triangles;
+    triangles.reserve(mesh.triangles.size());
+    for (const auto& t : mesh.triangles) triangles.emplace_back(t[0], t[1], t[2]);
+
+    HACD::HACD hacd;
+    hacd.SetPoints(points.data());
+    hacd.SetNPoints(points.size());
+    hacd.SetTriangles(triangles.data());
+    hacd.SetNTriangles(triangles.size());
+    hacd.SetCompacityWeight(0.1);
+    hacd.SetVolumeWeight(0.0);
+    hacd.SetNClusters(1);
+    hacd.SetNVerticesPerCH(static_cast<std::size_t>(std::max(8, options.decompositionMaxHullVertices)));
+    hacd.SetConcavity(options.decompositionConcavity * 1000.0);
+    // Extra sample points: without them HACD measures concavity at mesh vertices only and keeps
+    // a coarse L-shaped prism in one piece.
+    hacd.SetAddExtraDistPoints(true);
+    hacd.SetAddNeighboursDistPoints(true);
+    hacd.SetAddFacesPoints(true);
+    if (!hacd.Compute()) throw Error(meshName(mesh) + ": HACD convex decomposition failed");
+
+    std::vector<std::vector<Eigen::Vector3d>> clusters;
+    for (std::size_t c = 0; c < hacd.GetNClusters(); ++c) {
+        std::vector<HACD::Vec3<HACD::Real>> chPoints(hacd.GetNPointsCH(c));
+        std::vector<HACD::Vec3<long>> chTriangles(hacd.GetNTrianglesCH(c));
+        if (chPoints.size() < 4) continue;
+        hacd.GetCH(c, chPoints.data(), chTriangles.data());
+        std::vector<Eigen::Vector3d> cluster;
+        for (const auto& p : chPoints) cluster.emplace_back(p.X(), p.Y(), p.Z());
+        clusters.push_back(std::move(cluster));
+    }
+    return clusters;
+}
+
+}  // namespace
+
+std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& mesh, CollisionShapeKind kind,
+                                                           const CollisionShapeOptions& options) {
+    const std::string name = meshName(mesh);
+    if (mesh.vertices.size() < 4 || mesh.triangles.size() < 4)
+        throw Error(name +
+                    ": a collision shape needs a closed mesh with at least 4 vertices and 4 triangles");
+    if (!(options.margin >= 0.0) || !std::isfinite(options.margin)) {
+        std::ostringstream out;
+        out << name << ": collision margin " << options.margin << " m (need finite, >= 0)";
+        throw Error(out.str());
+    }
+    const double volume = computeMassProperties(mesh).volume;
+    const double margin = options.margin > 0.0 ? options.margin : std::min(0.04, 0.02 * std::cbrt(volume));
+
+    if (kind == CollisionShapeKind::ConvexDecomposition &&
+        mesh.triangles.size() > static_cast<std::size_t>(std::max(0, options.decompositionTriangleLimit))) {
+        logf(LogLevel::Debug, name, ": ", mesh.triangles.size(),
+             " triangles exceed the decomposition limit of ", options.decompositionTriangleLimit,
+             "; using a GImpact mesh shape");
+        kind = CollisionShapeKind::GImpactMesh;
+    }
+    auto storage = std::make_unique<CollisionShapeStorage>();
+    storage->kind_ = kind;
+    storage->margin_ = margin;
+    CollisionShapeStorage::Impl& impl = *storage->impl_;
+    switch (kind) {
+        case CollisionShapeKind::ConvexHull: {
+            ConvexPolytope piece;
+            impl.root = shrunkHull(mesh.vertices, margin, name, piece);
+            storage->pieces_.push_back(std::move(piece));
+            break;
+        }
+        case CollisionShapeKind::ConvexDecomposition: {
+            const auto clusters = decompose(mesh, options);
+            if (clusters.empty()) throw Error(name + ": HACD convex decomposition returned no usable piece");
+            auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(clusters.size()));
+            btTransform identity;
+            identity.setIdentity();
+            for (std::size_t c = 0; c < clusters.size(); ++c) {
+                ConvexPolytope piece;
+                impl.children.push_back(
+                    shrunkHull(clusters[c], margin, name + " piece " + std::to_string(c), piece));
+                compound->addChildShape(identity, impl.children.back().get());
+                storage->pieces_.push_back(std::move(piece));
+            }
+            compound->setMargin(btScalar(margin));
+            impl.root = std::move(compound);
+            break;
+        }
+        case CollisionShapeKind::GImpactMesh: {
+            for (const auto& v : mesh.vertices)
+                impl.vertices.insert(impl.vertices.end(),
+                                     {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())});
+            for (const auto& t : mesh.triangles) impl.indices.insert(impl.indices.end(), {t[0], t[1], t[2]});
+            impl.meshInterface = std::make_unique<btTriangleIndexVertexArray>(
+                static_cast<int>(mesh.triangles.size()), impl.indices.data(),
+                3 * static_cast<int>(sizeof(int)), static_cast<int>(mesh.vertices.size()),
+                impl.vertices.data(), 3 * static_cast<int>(sizeof(btScalar)));
+            auto gimpact = std::make_unique<btGImpactMeshShape>(impl.meshInterface.get());
+            gimpact->setMargin(btScalar(margin));
+            gimpact->updateBound();
+            impl.root = std::move(gimpact);
+            break;
+        }
+    }
+    storage->shape_ = impl.root.get();
+    return storage;
+}
+
+}  // namespace btfracture

@@ -1,0 +1,42 @@
+#pragma once
+// Per-body fracture settings of a btFractureRigidBody (SI units).
+#include <btFracture/dynamics/CollisionShapeBuilder.h>
+
+#include <string>
+
+namespace btfracture {
+
+// How the fracture engine computes stress intensity factors (paper §3, §4, Fig. 7).
+enum class FractureMethod {
+    Full,       // FULL: crack unknowns in the BEM system (Eq. 4)
+    Estimated,  // EST: one crack-free solve, SIFs from interior stress (§4.2, §4.3)
+    Hybrid,     // HYBRID: FULL until the BEM mesh has more than hybridElementThreshold elements
+};
+
+struct FractureBodySettings {
+    bool fracturable = true;  // false: a plain Bullet body, the world's hook never looks at it
+    FractureMethod method = FractureMethod::Hybrid;
+    int hybridElementThreshold = 2000;  // HYBRID switches FULL -> EST above this many BEM elements
+    // Cheap trigger: the fracture engine runs only when the sum of the normal impulses on the
+    // body in one step reaches this value [N s].
+    double impulseThreshold = 1.0;
+    int bemTriangleTarget = 1000;        // BEM mesh resolution [triangles]
+    int collisionTriangleTarget = 5000;  // collision mesh resolution [triangles], >= BEM target
+    double voxelSize = 0.0;              // level-set voxel size [m]; 0: the engine chooses
+    // Generations: an original body has refractureDepth 0, a breakable fragment its parent's + 1
+    // (the > 95 % fragment keeps its parent's). A body breaks only while
+    // refractureDepth <= maxRefractureDepth.
+    int maxRefractureDepth = 3;
+    int refractureDepth = 0;
+    // Collision shape of a non-convex body and of its non-convex fragments (convex ones always
+    // get a btConvexHullShape); see CollisionShapeBuilder.h for the trade-off.
+    CollisionShapeKind concaveShapeKind = CollisionShapeKind::ConvexDecomposition;
+    CollisionShapeOptions shapeOptions;
+};
+
+// Throws btfracture::Error naming `body` and the offending field when a value is out of range.
+void validate(const FractureBodySettings& settings, const std::string& body);
+
+const char* toString(FractureMethod method);
+
+}  // namespace btfracture

@@ -1,0 +1,568 @@
+#include <btFracture/dynamics/btFractureDynamicsWorld.h>
+
+#include <btFracture/core/Error.h>
+#include <btFracture/core/Log.h>
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/core/Timer.h>
+#include <btFracture/dynamics/BulletEigen.h>
+#include <btFracture/dynamics/ContactCurvature.h>
+#include <btFracture/dynamics/ConvexHullMesh.h>
+#include <btFracture/dynamics/FragmentSeparation.h>
+#include <btFracture/dynamics/HertzContact.h>
+#include <btFracture/dynamics/btFractureRigidBody.h>
+
+#include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
+#include <BulletCollision/CollisionDispatch/btCollisionConfiguration.h>
+#include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
+#include <BulletCollision/CollisionDispatch/btConvexPlaneCollisionAlgorithm.h>
+#include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace btfracture {
+namespace {
+
+btFractureRigidBody* fracturable(const btCollisionObject* object) {
+    btFractureRigidBody* body = btFractureRigidBody::upcast(const_cast<btCollisionObject*>(object));
+    return body && body->isFracturable() ? body : nullptr;
+}
+
+// The solver touched this manifold's points in the step just taken: its island was awake and
+// both bodies respond to contacts.
+bool wasSolved(const btPersistentManifold& manifold) {
+    const btCollisionObject* a = manifold.getBody0();
+    const btCollisionObject* b = manifold.getBody1();
+    return (a->isActive() || b->isActive()) && a->hasContactResponse() && b->hasContactResponse();
+}
+
+const char* className(FragmentSpec::Class cls) {
+    switch (cls) {
+        case FragmentSpec::Class::ConvexHull:
+            return "convex hull";
+        case FragmentSpec::Class::Mesh:
+            return "mesh";
+        case FragmentSpec::Class::Breakable:
+            return "breakable";
+        case FragmentSpec::Class::KeepsParentSolver:
+            return "keeps parent solver";
+    }
+    return "?";
+}
+
+// Throws when the engine's fragment is unusable.
+void validateSpec(const FragmentSpec& spec, const std::string& where) {
+    std::ostringstream problem;
+    const Eigen::Matrix3d& J = spec.inertiaAboutCom;
+    if (spec.collisionMesh.vertices.size() < 4 || spec.collisionMesh.triangles.size() < 4)
+        problem << "collision mesh has " << spec.collisionMesh.vertices.size() << " vertices and "
+                << spec.collisionMesh.triangles.size() << " triangles (need a closed mesh)";
+    else if (!(spec.volume > 0.0) || !std::isfinite(spec.volume))
+        problem << "volume " << spec.volume << " m^3 (need > 0)";
+    else if (!spec.centreOfMass.allFinite())
+        problem << "non-finite centre of mass";
+    else if (!J.allFinite() || (J - J.transpose()).norm() > 1e-9 * J.norm())
+        problem << "inertia tensor not finite and symmetric";
+    else if (spec.carriedState && spec.cls != FragmentSpec::Class::Breakable)
+        problem << "carries a FractureState but is of class '" << className(spec.cls)
+                << "' (only breakable may)";
+    if (problem.tellp() > 0) throw Error(where + ": " + problem.str());
+    const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(J).eigenvalues();
+    if (!(moments(0) > 0.0) || moments(0) + moments(1) < moments(2) * (1.0 - 1e-6)) {
+        std::ostringstream out;
+        out << where << ": inertia tensor has principal moments (" << moments.transpose()
+            << ") kg m^2, not a physical rigid body (need positive moments obeying the triangle inequality)";
+        throw Error(out.str());
+    }
+}
+
+// While alive, convex-convex and convex-plane pairs that get their collision algorithm (i.e. the
+// new fragments' pairs in the replayed step) use Bullet's perturbed multi-point contact
+// generation, so a fragment resting on something starts with a full contact manifold instead of
+// one point per step (which lets it sink and tip: popping). Other pairs keep their algorithms.
+class MultipointContactsForNewPairs {
+public:
+    explicit MultipointContactsForNewPairs(btCollisionConfiguration* configuration) {
+        if (!configuration) return;
+        convex_ =
+            dynamic_cast<btConvexConvexAlgorithm::CreateFunc*>(configuration->getCollisionAlgorithmCreateFunc(
+                CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
+        plane_ = dynamic_cast<btConvexPlaneCollisionAlgorithm::CreateFunc*>(
+            configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE,
+                                                           STATIC_PLANE_PROXYTYPE));
+        if (convex_) {
+            saved_[0] = convex_->m_numPerturbationIterations;
+            saved_[1] = convex_->m_minimumPointsPerturbationThreshold;
+            convex_->m_numPerturbationIterations = 3;
+            convex_->m_minimumPointsPerturbationThreshold = 3;
+        }
+        if (plane_) {
+            saved_[2] = plane_->m_numPerturbationIterations;
+            saved_[3] = plane_->m_minimumPointsPerturbationThreshold;
+            plane_->m_numPerturbationIterations = 3;
+            plane_->m_minimumPointsPerturbationThreshold = 3;
+        }
+    }
+    ~MultipointContactsForNewPairs() {
+        if (convex_) {
+            convex_->m_numPerturbationIterations = saved_[0];
+            convex_->m_minimumPointsPerturbationThreshold = saved_[1];
+        }
+        if (plane_) {
+            plane_->m_numPerturbationIterations = saved_[2];
+            plane_->m_minimumPointsPerturbationThreshold = saved_[3];
+        }
+    }
+    MultipointContactsForNewPairs(const MultipointContactsForNewPairs&) = delete;
+    MultipointContactsForNewPairs& operator=(const MultipointContactsForNewPairs&) = delete;
+
+private:
+    btConvexConvexAlgorithm::CreateFunc* convex_ = nullptr;
+    btConvexPlaneCollisionAlgorithm::CreateFunc* plane_ = nullptr;
+    int saved_[4] = {0, 0, 0, 0};
+};
+
+Eigen::Matrix3d worldInertia(const btRigidBody& body) {
+    const Eigen::Matrix3d R = toEigen(body.getWorldTransform().getBasis());
+    return R * toEigen(body.getInvInertiaDiagLocal()).cwiseInverse().asDiagonal() * R.transpose();
+}
+
+// Moves the fragments by their separation pushes and gives them the parent's pre-step rigid
+// motion. Without pushes: v_f = v + w x (x_f - x_parent), w_f = w. With pushes the fragments'
+// common centre moves to X' and a rigid motion about the old centre would change the angular
+// momentum at first order in the push; so the common angular velocity becomes w' = I'^-1 I_0 w
+// (I_0, I': the fragments' inertia about their common centre before and after the pushes) and
+// v_f = V + w' x (x_f - X'), V the velocity of the old common centre. Linear momentum and angular
+// momentum about the centre of mass are then exactly those the unpushed fragments carried.
+void assignParentMotion(const std::vector<btFractureRigidBody*>& fragments,
+                        const std::vector<Eigen::Vector3d>& pushes, const btRigidBody& parent) {
+    const Eigen::Vector3d parentOrigin = toEigen(parent.getWorldTransform().getOrigin());
+    const Eigen::Vector3d v = toEigen(parent.getLinearVelocity());
+    const Eigen::Vector3d w = toEigen(parent.getAngularVelocity());
+    const std::size_t n = fragments.size();
+    std::vector<double> mass(n);
+    std::vector<Eigen::Vector3d> before(n), after(n);
+    double total = 0.0;
+    Eigen::Vector3d centreBefore = Eigen::Vector3d::Zero(), centreAfter = Eigen::Vector3d::Zero();
+    bool pushed = false;
+    for (std::size_t k = 0; k < n; ++k) {
+        mass[k] = 1.0 / double(fragments[k]->getInvMass());
+        before[k] = toEigen(fragments[k]->getWorldTransform().getOrigin());
+        after[k] = before[k] + pushes[k];
+        pushed = pushed || pushes[k] != Eigen::Vector3d::Zero();
+        total += mass[k];
+        centreBefore += mass[k] * before[k];
+        centreAfter += mass[k] * after[k];
+    }
+    centreBefore /= total;
+    centreAfter /= total;
+    const Eigen::Vector3d V = v + w.cross(centreBefore - parentOrigin);
+    Eigen::Vector3d spin = w;
+    if (pushed) {
+        Eigen::Matrix3d inertiaBefore = Eigen::Matrix3d::Zero(), inertiaAfter = Eigen::Matrix3d::Zero();
+        for (std::size_t k = 0; k < n; ++k) {
+            const Eigen::Matrix3d own = worldInertia(*fragments[k]);
+            const Eigen::Vector3d r0 = before[k] - centreBefore, r1 = after[k] - centreAfter;
+            inertiaBefore +=
+                own + mass[k] * (r0.squaredNorm() * Eigen::Matrix3d::Identity() - r0 * r0.transpose());
+            inertiaAfter +=
+                own + mass[k] * (r1.squaredNorm() * Eigen::Matrix3d::Identity() - r1 * r1.transpose());
+        }
+        spin = inertiaAfter.ldlt().solve(inertiaBefore * w);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        btFractureRigidBody& f = *fragments[k];
+        btTransform t = f.getWorldTransform();
+        const Eigen::Vector3d centre = pushed ? after[k] : before[k];
+        const Eigen::Vector3d velocity = pushed ? Eigen::Vector3d(V + spin.cross(after[k] - centreAfter))
+                                                : Eigen::Vector3d(v + w.cross(before[k] - parentOrigin));
+        t.setOrigin(toBullet(centre));
+        f.setWorldTransform(t);
+        f.setInterpolationWorldTransform(t);
+        f.setLinearVelocity(toBullet(velocity));
+        f.setAngularVelocity(toBullet(spin));
+        f.setInterpolationLinearVelocity(toBullet(velocity));
+        f.setInterpolationAngularVelocity(toBullet(spin));
+        f.updateInertiaTensor();
+    }
+}
+
+}  // namespace
+
+struct btFractureDynamicsWorld::Event {
+    btFractureRigidBody* parent;
+    FractureOutcome outcome;
+    FractureEventInfo info;
+    std::vector<btFractureRigidBody*> fragments;
+};
+
+btFractureDynamicsWorld::btFractureDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* pairCache,
+                                                 btConstraintSolver* constraintSolver,
+                                                 btCollisionConfiguration* collisionConfiguration)
+    : btDiscreteDynamicsWorld(dispatcher, pairCache, constraintSolver, collisionConfiguration),
+      defaultMaterial_(Material::steel()),
+      collisionConfiguration_(collisionConfiguration) {
+    if (auto* collisionDispatcher = dynamic_cast<btCollisionDispatcher*>(dispatcher))
+        btGImpactCollisionAlgorithm::registerAlgorithm(collisionDispatcher);
+}
+
+btFractureDynamicsWorld::~btFractureDynamicsWorld() {
+    for (auto& body : owned_) btDiscreteDynamicsWorld::removeRigidBody(body.get());
+    owned_.clear();
+}
+
+void btFractureDynamicsWorld::setFractureEngine(std::unique_ptr<FractureEngine> engine) {
+    engine_ = std::move(engine);
+    missingEngineLogged_ = false;
+}
+
+void btFractureDynamicsWorld::addFractureListener(FractureListener* listener) {
+    if (listener && std::find(listeners_.begin(), listeners_.end(), listener) == listeners_.end())
+        listeners_.push_back(listener);
+}
+
+void btFractureDynamicsWorld::removeFractureListener(FractureListener* listener) {
+    listeners_.erase(std::remove(listeners_.begin(), listeners_.end(), listener), listeners_.end());
+}
+
+bool btFractureDynamicsWorld::ownsBody(const btCollisionObject* object) const {
+    return std::any_of(owned_.begin(), owned_.end(), [object](const auto& b) { return b.get() == object; });
+}
+
+void btFractureDynamicsWorld::noteAdded(btRigidBody* body) {
+    if (btFractureRigidBody* f = btFractureRigidBody::upcast(body); f && !f->inFractureWorld_) {
+        f->inFractureWorld_ = true;
+        ++fractureBodies_;
+    }
+}
+
+void btFractureDynamicsWorld::addRigidBody(btRigidBody* body) {
+    btDiscreteDynamicsWorld::addRigidBody(body);
+    noteAdded(body);
+}
+
+void btFractureDynamicsWorld::addRigidBody(btRigidBody* body, int group, int mask) {
+    btDiscreteDynamicsWorld::addRigidBody(body, group, mask);
+    noteAdded(body);
+}
+
+void btFractureDynamicsWorld::removeRigidBody(btRigidBody* body) {
+    btDiscreteDynamicsWorld::removeRigidBody(body);
+    if (btFractureRigidBody* f = btFractureRigidBody::upcast(body); f && f->inFractureWorld_) {
+        f->inFractureWorld_ = false;
+        --fractureBodies_;
+    }
+    // Whoever removes a world-owned fragment takes it.
+    const auto it =
+        std::find_if(owned_.begin(), owned_.end(), [body](const auto& b) { return b.get() == body; });
+    if (it != owned_.end()) {
+        it->release();
+        owned_.erase(it);
+    }
+}
+
+void btFractureDynamicsWorld::internalSingleStepSimulation(btScalar timeStep) {
+    if (!enabled_ || replaying_ || fractureBodies_ == 0) {
+        btDiscreteDynamicsWorld::internalSingleStepSimulation(timeStep);
+        return;
+    }
+    if (!engine_) {
+        if (!missingEngineLogged_) {
+            missingEngineLogged_ = true;
+            logf(LogLevel::Warning, "btFractureDynamicsWorld: no FractureEngine set; bodies will not break");
+        }
+        btDiscreteDynamicsWorld::internalSingleStepSimulation(timeStep);
+        return;
+    }
+    ++stepStamp_;
+    ++stats_.steps;
+    snapshot_.capture(m_nonStaticRigidBodies);
+    btDiscreteDynamicsWorld::internalSingleStepSimulation(timeStep);
+    collectTriggeredBodies();
+    if (!triggered_.empty()) runFractureEvents(timeStep);
+}
+
+void btFractureDynamicsWorld::collectTriggeredBodies() {
+    touched_.clear();
+    triggered_.clear();
+    const int manifolds = m_dispatcher1->getNumManifolds();
+    for (int m = 0; m < manifolds; ++m) {
+        const btPersistentManifold* manifold = m_dispatcher1->getManifoldByIndexInternal(m);
+        if (manifold->getNumContacts() == 0) continue;  // most broadphase pairs: no body touched
+        btFractureRigidBody* bodies[2] = {fracturable(manifold->getBody0()),
+                                          fracturable(manifold->getBody1())};
+        if (!bodies[0] && !bodies[1]) continue;
+        if (!wasSolved(*manifold)) continue;
+        double impulse = 0.0;
+        const btScalar threshold = manifold->getContactProcessingThreshold();
+        for (int k = 0; k < manifold->getNumContacts(); ++k) {
+            const btManifoldPoint& point = manifold->getContactPoint(k);
+            if (point.getDistance() <= threshold && point.m_appliedImpulse > 0)
+                impulse += double(point.m_appliedImpulse);
+        }
+        for (btFractureRigidBody* body : bodies) {
+            if (!body) continue;
+            if (body->hookStamp_ != stepStamp_) {
+                body->hookStamp_ = stepStamp_;
+                body->impulseSum_ = 0.0;
+                touched_.push_back(body);
+            }
+            body->impulseSum_ += impulse;
+        }
+    }
+    stats_.bodiesChecked += touched_.size();
+    for (btFractureRigidBody* body : touched_)
+        if (body->impulseSum_ >= body->settings().impulseThreshold && body->impulseSum_ > 0.0)
+            triggered_.push_back(body);
+    stats_.bodiesTriggered += triggered_.size();
+}
+
+bool btFractureDynamicsWorld::buildContacts(btFractureRigidBody& body,
+                                            std::vector<BodyContact>& contacts) const {
+    contacts.clear();
+    const RigidBodySnapshot::Entry* self = snapshot_.find(&body);
+    if (!self) return false;
+    const Eigen::Matrix3d rotation = toEigen(self->transform.getBasis());
+    const int manifolds = m_dispatcher1->getNumManifolds();
+    for (int m = 0; m < manifolds; ++m) {
+        const btPersistentManifold* manifold = m_dispatcher1->getManifoldByIndexInternal(m);
+        const bool isBody0 = manifold->getBody0() == &body;
+        if (!isBody0 && manifold->getBody1() != &body) continue;
+        if (!wasSolved(*manifold)) continue;
+        const btCollisionObject* other = isBody0 ? manifold->getBody1() : manifold->getBody0();
+        const btRigidBody* otherRigid = btRigidBody::upcast(other);
+        const btFractureRigidBody* otherFracture = btFractureRigidBody::upcast(other);
+        const RigidBodySnapshot::Entry* otherState = snapshot_.find(other);
+        const Material& otherMaterial = otherFracture ? otherFracture->material() : defaultMaterial_;
+        const btTransform otherTransform = otherState ? otherState->transform : other->getWorldTransform();
+        const btScalar threshold = manifold->getContactProcessingThreshold();
+        for (int k = 0; k < manifold->getNumContacts(); ++k) {
+            const btManifoldPoint& point = manifold->getContactPoint(k);
+            if (point.getDistance() > threshold || !(point.m_appliedImpulse > 0)) continue;
+            // Bullet's normal points from body1 to body0: the impulse on body0 is +J n.
+            const Eigen::Vector3d normalOnB = toEigen(point.m_normalWorldOnB);
+            const Eigen::Vector3d worldDirection = isBody0 ? normalOnB : Eigen::Vector3d(-normalOnB);
+            const Eigen::Vector3d selfLocal = toEigen(isBody0 ? point.m_localPointA : point.m_localPointB);
+            const Eigen::Vector3d otherLocal = toEigen(isBody0 ? point.m_localPointB : point.m_localPointA);
+
+            // Approach speed from the pre-step velocities: the relative velocity of the other body's
+            // point towards this one's, along the direction of the impulse on this body.
+            const Eigen::Vector3d selfPoint = toEigen(self->transform * toBullet(selfLocal));
+            const Eigen::Vector3d otherPoint = toEigen(otherTransform * toBullet(otherLocal));
+            const Eigen::Vector3d selfVelocity =
+                toEigen(self->linearVelocity) +
+                toEigen(self->angularVelocity).cross(selfPoint - toEigen(self->transform.getOrigin()));
+            Eigen::Vector3d otherVelocity = Eigen::Vector3d::Zero();
+            if (otherState)
+                otherVelocity = toEigen(otherState->linearVelocity) +
+                                toEigen(otherState->angularVelocity)
+                                    .cross(otherPoint - toEigen(otherState->transform.getOrigin()));
+            else if (otherRigid)
+                otherVelocity = toEigen(
+                    otherRigid->getVelocityInLocalPoint(toBullet(otherPoint) - otherTransform.getOrigin()));
+            const double approach = std::max(0.0, (otherVelocity - selfVelocity).dot(worldDirection));
+
+            HertzBody a{body.material().youngsModulus(), body.material().poissonRatio(),
+                        double(body.getInvMass()), body.meanCurvatureAt(selfLocal)};
+            HertzBody b{otherMaterial.youngsModulus(), otherMaterial.poissonRatio(),
+                        otherRigid ? double(otherRigid->getInvMass()) : 0.0,
+                        otherFracture ? otherFracture->meanCurvatureAt(otherLocal)
+                                      : shapeMeanCurvature(*other->getCollisionShape(), otherLocal)};
+            if (a.inverseMass + b.inverseMass <= 0.0) continue;  // static against static: no impact
+            const HertzImpact hertz = hertzImpact(a, b, approach, body.characteristicLength());
+
+            BodyContact contact;
+            contact.point = selfLocal;
+            contact.direction = rotation.transpose() * worldDirection;
+            contact.impulse = double(point.m_appliedImpulse);
+            contact.approachSpeed = approach;
+            contact.duration = hertz.contactDuration;
+            contact.peakForce = hertz.peakForce;
+            contact.effectiveModulus = hertz.effectiveModulus;
+            contact.effectiveRadius = hertz.effectiveRadius;
+            contact.effectiveMass = hertz.effectiveMass;
+            contacts.push_back(contact);
+        }
+    }
+    return !contacts.empty();
+}
+
+void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
+    std::vector<Event> events;
+    std::vector<BodyContact> contacts;
+    for (btFractureRigidBody* body : triggered_) {
+        if (body->getNumConstraintRefs() > 0) {
+            logf(LogLevel::Warning, body->name(), ": has ", body->getNumConstraintRefs(),
+                 " constraints, which btFracture cannot move to fragments; the body is made unbreakable");
+            FractureBodySettings settings = body->settings();
+            settings.fracturable = false;
+            body->setSettings(settings);
+            continue;
+        }
+        Event event{body, {}, {}, {}};
+        try {
+            if (!buildContacts(*body, contacts)) continue;
+            event.info.step = stats_.steps;
+            event.info.contacts = static_cast<int>(contacts.size());
+            event.info.impulseSum = body->impulseSum_;
+            ++stats_.engineCalls;
+            Timer timer;
+            event.outcome = engine_->fracture(*body, contacts, stats_);
+            event.info.engineSeconds = timer.seconds();
+            event.info.engineTimings = event.outcome.timings;
+            for (std::size_t k = 0; k < event.outcome.fragments.size(); ++k)
+                validateSpec(event.outcome.fragments[k], body->name() + ": fragment " + std::to_string(k));
+        } catch (const Error& error) {
+            ++stats_.engineFailures;
+            logf(LogLevel::Error, body->name(), ": fracture failed, body made unbreakable: ", error.what());
+            FractureBodySettings settings = body->settings();
+            settings.fracturable = false;
+            body->setSettings(settings);
+            continue;
+        }
+        if (!event.outcome.fragments.empty()) events.push_back(std::move(event));
+    }
+    if (events.empty()) return;
+
+    Timer swapTimer;
+    snapshot_.restore();
+    std::vector<btFractureRigidBody*> spawned;
+    for (Event& event : events) {
+        event.fragments = spawnFragments(*event.parent, event.outcome);
+        ++stats_.fractureEvents;
+        stats_.fragmentsSpawned += event.fragments.size();
+        spawned.insert(spawned.end(), event.fragments.begin(), event.fragments.end());
+    }
+
+    // Push overlapping fragments apart, then give them the parent's rigid motion (momentum-exact).
+    std::vector<SeparationBody> separation;
+    for (btFractureRigidBody* f : spawned) {
+        SeparationBody s;
+        s.mass = 1.0 / double(f->getInvMass());
+        s.length = f->characteristicLength();
+        for (const ConvexPolytope& piece : f->shapeStorage().convexPieces()) {
+            ConvexPolytope world = piece;
+            for (auto& p : world.points) p = toEigen(f->getWorldTransform() * toBullet(p));
+            s.pieces.push_back(std::move(world));
+        }
+        separation.push_back(std::move(s));
+    }
+    const SeparationResult pushes = separateOverlaps(separation);
+    std::size_t index = 0;
+    for (Event& event : events) {
+        const std::vector<Eigen::Vector3d> eventPushes(
+            pushes.pushes.begin() + static_cast<std::ptrdiff_t>(index),
+            pushes.pushes.begin() + static_cast<std::ptrdiff_t>(index + event.fragments.size()));
+        index += event.fragments.size();
+        assignParentMotion(event.fragments, eventPushes, *event.parent);
+        event.info.maxSeparationPush = pushes.largestPush;
+    }
+
+    // Swap: parents out (their manifolds go with their broadphase pairs), fragments in, with
+    // gravity for the rest of this stepSimulation call. World-owned parents are kept until the
+    // listeners have seen them.
+    std::vector<std::unique_ptr<btFractureRigidBody>> retired;
+    for (Event& event : events) {
+        btFractureRigidBody* parent = event.parent;
+        const btBroadphaseProxy* proxy = parent->getBroadphaseHandle();
+        const int group = proxy ? proxy->m_collisionFilterGroup : int(btBroadphaseProxy::DefaultFilter);
+        const int mask = proxy ? proxy->m_collisionFilterMask : int(btBroadphaseProxy::AllFilter);
+        const auto owned =
+            std::find_if(owned_.begin(), owned_.end(), [parent](const auto& b) { return b.get() == parent; });
+        if (owned != owned_.end()) {
+            retired.push_back(std::move(*owned));
+            owned_.erase(owned);
+        }
+        removeRigidBody(parent);
+        for (btFractureRigidBody* f : event.fragments) {
+            addRigidBody(f, group, mask);
+            f->applyGravity();
+        }
+    }
+    for (Event& event : events) event.info.swapSeconds = swapTimer.seconds();
+    for (Event& event : events)
+        for (FractureListener* listener : listeners_)
+            listener->onFractureEvent(*event.parent, event.fragments, event.info);
+    retired.clear();
+
+    replaying_ = true;
+    {
+        const MultipointContactsForNewPairs multipoint(collisionConfiguration_);
+        btDiscreteDynamicsWorld::internalSingleStepSimulation(timeStep);
+    }
+    replaying_ = false;
+    ++stats_.replayedSteps;
+}
+
+std::vector<btFractureRigidBody*> btFractureDynamicsWorld::spawnFragments(btFractureRigidBody& parent,
+                                                                          FractureOutcome& outcome) {
+    std::vector<btFractureRigidBody*> fragments;
+    const btTransform parentTransform = parent.getWorldTransform();
+    const FractureBodySettings& parentSettings = parent.settings();
+    bool parentStateTaken = false;
+    for (std::size_t k = 0; k < outcome.fragments.size(); ++k) {
+        FragmentSpec& spec = outcome.fragments[k];
+        const PrincipalAxes axes = principalAxes(spec.inertiaAboutCom);
+        TriangleMesh mesh = std::move(spec.collisionMesh);
+        mesh.name = parent.name() + "_" + std::to_string(k);
+        for (auto& v : mesh.vertices) v = axes.rotation.transpose() * (v - spec.centreOfMass);
+
+        const bool breaks =
+            spec.cls == FragmentSpec::Class::Breakable || spec.cls == FragmentSpec::Class::KeepsParentSolver;
+        FractureBodySettings settings = parentSettings;
+        // A new generation, except the > 95 % piece, which continues its parent (§5.2 (d)).
+        if (spec.cls != FragmentSpec::Class::KeepsParentSolver)
+            settings.refractureDepth = parentSettings.refractureDepth + 1;
+        settings.fracturable = breaks && parentSettings.fracturable;
+
+        const CollisionShapeKind kind = spec.cls == FragmentSpec::Class::ConvexHull || isConvex(mesh)
+                                            ? CollisionShapeKind::ConvexHull
+                                            : parentSettings.concaveShapeKind;
+        auto shape = buildCollisionShape(mesh, kind, parentSettings.shapeOptions);
+        const btTransform local = toBullet(axes.rotation, spec.centreOfMass);
+        auto body = std::make_unique<btFractureRigidBody>(
+            parent.material(), std::move(mesh), std::move(shape), spec.volume, axes.moments,
+            parent.originalVolume(), settings, parentTransform * local);
+        if (spec.cls == FragmentSpec::Class::KeepsParentSolver) {
+            if (!parentStateTaken)
+                body->setFractureState(parent.releaseFractureState());
+            else
+                logf(LogLevel::Warning, parent.name(),
+                     ": more than one fragment claims to keep the parent's solver; ", body->name(),
+                     " starts without state");
+            parentStateTaken = true;
+        } else if (spec.cls == FragmentSpec::Class::Breakable) {
+            body->setFractureState(std::move(spec.carriedState));
+        }
+        // Surface and damping properties, filters and identity come from the parent.
+        body->setFriction(parent.getFriction());
+        body->setRollingFriction(parent.getRollingFriction());
+        body->setSpinningFriction(parent.getSpinningFriction());
+        body->setRestitution(parent.getRestitution());
+        body->setDamping(parent.getLinearDamping(), parent.getAngularDamping());
+        body->setSleepingThresholds(parent.getLinearSleepingThreshold(),
+                                    parent.getAngularSleepingThreshold());
+        body->setFlags(parent.getFlags());
+        body->setCollisionFlags(parent.getCollisionFlags());
+        body->setUserPointer(parent.getUserPointer());
+        body->setUserIndex(parent.getUserIndex());
+        if (parent.getFlags() & BT_DISABLE_WORLD_GRAVITY) body->setGravity(parent.getGravity());
+        if (parent.getCcdMotionThreshold() > 0) {
+            const btScalar scale = btScalar(body->characteristicLength() / parent.characteristicLength());
+            body->setCcdMotionThreshold(parent.getCcdMotionThreshold() * scale);
+            body->setCcdSweptSphereRadius(parent.getCcdSweptSphereRadius() * scale);
+        }
+        body->setActivationState(ACTIVE_TAG);
+        fragments.push_back(body.get());
+        owned_.push_back(std::move(body));
+    }
+    return fragments;
+}
+
+}  // namespace btfracture

@@ -1,0 +1,117 @@
+#pragma once
+// A btDiscreteDynamicsWorld in which btFractureRigidBody bodies break (paper §5).
+//
+// Why a subclass and not a tick callback on any world: rolling a step back and replaying it
+// (§5.2) needs the body states from before the step, the step itself and a second run of it
+// inside one stepSimulation() call, and it must not steal the app's single internal tick
+// callback slot. Overriding internalSingleStepSimulation() gives exactly that; apps change one
+// type name (btDiscreteDynamicsWorld -> btFractureDynamicsWorld) and keep everything else.
+//
+// Per internal step, when fracture is enabled, an engine is set and at least one
+// btFractureRigidBody is in the world:
+//  1. snapshot poses, velocities and sleeping states of the non-static bodies (reused storage);
+//  2. run Bullet's step unchanged;
+//  3. scan the contact manifolds once: for every solved contact point (island awake, distance
+//     within the processing threshold) of a fracturable body, add m_appliedImpulse to that body's
+//     sum. Manifolds without a fracturable body cost two tag compares; nothing is allocated.
+//  4. Cheap trigger: bodies whose sum stays under settings().impulseThreshold are done. For the
+//     others, the contacts are converted to BodyContact (body frame; approach speed from the
+//     pre-step velocities; Hertz duration, HertzContact.h) and FractureEngine::fracture() runs.
+//  5. If any body broke: restore the snapshot, remove the parents (Bullet drops their contact
+//     manifolds with their broadphase pairs), add the fragments with the parent's pre-step rigid
+//     motion (v + w x r, same w), push overlapping fragments apart (FragmentSeparation.h),
+//     tell the listeners, and replay the step with fracture suppressed. Pairs created in the
+//     replay (the fragments') use Bullet's multi-point convex contacts (3 perturbation
+//     iterations) so that a resting fragment starts with a full manifold instead of sinking and
+//     tipping on a single point; existing pairs are not affected.
+// With fracture disabled, no engine, or no btFractureRigidBody added, a step is Bullet's step.
+//
+// Internal tick callbacks: on a step that fractures, Bullet's pre/post tick callbacks run for the
+// discarded step and again for the replay; isReplayingStep() tells them apart.
+//
+// Ownership: fragments are created and owned by the world while they are in it. Removing a body
+// from the world (removeRigidBody / removeCollisionObject) hands a world-owned body to the
+// caller, so the usual Bullet clean-up loop (remove, then delete every object) stays correct.
+// Bodies still in the world when it is destroyed are deleted by it if it owns them. A parent the
+// application added is removed on fracture, not deleted: the listener tells the application,
+// which deletes it. A world-owned parent is deleted after the listeners ran.
+//
+// Dispatcher: when it is a btCollisionDispatcher, btGImpactCollisionAlgorithm is registered so that
+// CollisionShapeKind::GImpactMesh shapes collide.
+#include <btFracture/core/Material.h>
+#include <btFracture/dynamics/FractureEngine.h>
+#include <btFracture/dynamics/FractureListener.h>
+#include <btFracture/dynamics/RigidBodySnapshot.h>
+
+#include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
+
+#include <memory>
+#include <vector>
+
+namespace btfracture {
+
+class btFractureRigidBody;
+
+class btFractureDynamicsWorld : public btDiscreteDynamicsWorld {
+public:
+    btFractureDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* pairCache,
+                            btConstraintSolver* constraintSolver,
+                            btCollisionConfiguration* collisionConfiguration);
+    ~btFractureDynamicsWorld() override;
+
+    // The world owns its engine. nullptr (the default) means fracture never happens (logged once).
+    void setFractureEngine(std::unique_ptr<FractureEngine> engine);
+    FractureEngine* fractureEngine() const { return engine_.get(); }
+
+    // The world switch: false turns all fracture work off (the step is plain Bullet).
+    void setFractureEnabled(bool enabled) { enabled_ = enabled; }
+    bool isFractureEnabled() const { return enabled_; }
+
+    // Material of bodies that are not btFractureRigidBody, for the Hertz contact duration
+    // (default: Material::steel(), i.e. stiff).
+    void setDefaultMaterial(const Material& material) { defaultMaterial_ = material; }
+    const Material& defaultMaterial() const { return defaultMaterial_; }
+
+    void addFractureListener(FractureListener* listener);
+    void removeFractureListener(FractureListener* listener);
+
+    const FractureStatistics& fractureStatistics() const { return stats_; }
+    void resetFractureStatistics() { stats_ = FractureStatistics{}; }
+
+    bool isReplayingStep() const { return replaying_; }
+    // True while `object` is a fragment the world created and still holds.
+    bool ownsBody(const btCollisionObject* object) const;
+
+    void addRigidBody(btRigidBody* body) override;
+    void addRigidBody(btRigidBody* body, int group, int mask) override;
+    void removeRigidBody(btRigidBody* body) override;
+
+protected:
+    void internalSingleStepSimulation(btScalar timeStep) override;
+
+private:
+    struct Event;
+    void noteAdded(btRigidBody* body);
+    void collectTriggeredBodies();
+    bool buildContacts(btFractureRigidBody& body, std::vector<BodyContact>& contacts) const;
+    void runFractureEvents(btScalar timeStep);
+    std::vector<btFractureRigidBody*> spawnFragments(btFractureRigidBody& parent, FractureOutcome& outcome);
+
+    std::unique_ptr<FractureEngine> engine_;
+    bool enabled_ = true;
+    bool replaying_ = false;
+    bool missingEngineLogged_ = false;
+    Material defaultMaterial_;
+    btCollisionConfiguration* collisionConfiguration_;
+    std::vector<FractureListener*> listeners_;
+    FractureStatistics stats_;
+    std::uint64_t stepStamp_ = 0;
+    int fractureBodies_ = 0;  // btFractureRigidBody instances currently in the world
+
+    RigidBodySnapshot snapshot_;
+    std::vector<btFractureRigidBody*> touched_;                // fracturable bodies with contacts this step
+    std::vector<btFractureRigidBody*> triggered_;              // ... whose impulse sum reached the threshold
+    std::vector<std::unique_ptr<btFractureRigidBody>> owned_;  // fragments in the world, creation order
+};
+
+}  // namespace btfracture

@@ -1,0 +1,23 @@
+#pragma once
+// Convex hulls: the collision shape of the smallest fragments (paper §5.2 class (a)) and the
+// operands of the overlap queries between fragments (ConvexPenetration.h).
+#include <btFracture/core/TriangleMesh.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace btfracture {
+
+// Outward-oriented closed mesh of the convex hull of `points` (Bullet's btConvexHullComputer;
+// its coplanar faces are fan-triangulated); the corners are the input points, exactly. Throws
+// btfracture::Error naming `name` when the points are not finite or span no volume (fewer than
+// four affinely independent points).
+TriangleMesh convexHullMesh(const std::vector<Eigen::Vector3d>& points, const std::string& name);
+
+// True when every vertex lies on the inner side of every triangle's plane, within
+// relativeTolerance times the bounding-box diagonal. Expects a closed, outward-oriented mesh.
+bool isConvex(const TriangleMesh& mesh, double relativeTolerance = 1e-9);
+
+}  // namespace btfracture

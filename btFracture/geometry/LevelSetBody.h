@@ -1,0 +1,114 @@
+#pragma once
+// The finest of the three resolutions (paper §1, §5.2): a body as an OpenVDB narrow-band
+// signed-distance level set, plus a crack grid that holds every crack cut into it at voxel
+// resolution. OpenVDB stays behind the pimpl; nothing here needs its headers.
+//
+// Frame and units: positions are in the frame of the mesh the body was built from (the body
+// frame), in metres; distances [m], volumes [m^3], curvature [1/m].
+//
+// Representation (internal, see LevelSetBody.cpp):
+//  - solid: signed distance to the uncut body (negative inside), narrow band of 3 voxels;
+//  - crack grid: signed distance to the union of crack slabs. A crack sheet becomes a slab of
+//    1.7 voxels thickness (|distance to the sheet| < 0.85 voxel, as in FractureRB), thick enough
+//    that a cut through the body always separates its voxels;
+//  - object: solid minus the crack slabs (CSG difference); segmentation runs on it.
+// The crack slab is a numerical device: mass properties count the slab as material (a crack
+// has no thickness), so the fragments of a cut add up to the uncut body.
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/core/TriangleMesh.h>
+#include <btFracture/geometry/Fragment.h>
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <vector>
+
+namespace btfracture {
+
+class LevelSetBody {
+public:
+    // Default resolution: this many voxels across the longest side of the bounding box. At 128
+    // the bunny and armadillo measure volume within 0.1 %, centre of mass within 0.05 voxel and
+    // inertia within 0.2 % of their exact polyhedral values (tests/geometry).
+    static constexpr int kDefaultVoxelsAcross = 128;
+    // Resolution limit that guards memory: at most this many voxels across the longest side.
+    static constexpr int kMaxVoxelsAcross = 4096;
+
+    // Longest bounding-box side of `mesh` / kDefaultVoxelsAcross [m].
+    static double defaultVoxelSize(const TriangleMesh& mesh);
+
+    // Builds the level set of a closed, consistently oriented triangle mesh (core/MeshCheck.h;
+    // an inside-out mesh is flipped with a warning) at `voxelSize` [m]. Throws btfracture::Error
+    // naming mesh.name if the mesh is not a closed solid, if voxelSize is not finite and > 0, or
+    // if it would give more than kMaxVoxelsAcross voxels across.
+    LevelSetBody(const TriangleMesh& closedMesh, double voxelSize);
+    ~LevelSetBody();
+    LevelSetBody(LevelSetBody&&) noexcept;
+    LevelSetBody& operator=(LevelSetBody&&) noexcept;
+    LevelSetBody(const LevelSetBody&) = delete;
+    LevelSetBody& operator=(const LevelSetBody&) = delete;
+
+    const std::string& name() const;
+    double voxelSize() const;
+    // Volume of the body before its first fracture (§5.2); fragments inherit their parent's.
+    double originalVolume() const;
+
+    // Volume, centre of mass and inertia (density 1) of the solid, integrated on the level set
+    // with a smoothed Heaviside of the signed distance (width +-1.5 voxels) over the narrow band
+    // plus the interior voxels and tiles. Crack slabs count as material (see above).
+    const MassProperties& massProperties() const;
+
+    // Signed distance to the cut object's surface at p [m]: negative inside material, positive
+    // outside the body or inside a crack slab (trilinear interpolation; the narrow band is +-3
+    // voxels wide, farther values are clamped to +-3 voxels).
+    double signedDistance(const Eigen::Vector3d& p) const;
+    // True if p is inside material that no crack slab has removed.
+    bool isInsideObject(const Eigen::Vector3d& p) const;
+    // True if p is inside the slab of an existing crack.
+    bool isInsideCrack(const Eigen::Vector3d& p) const;
+    // Id of the crack whose slab contains p, or -1 if p is in no crack slab.
+    int crackAt(const Eigen::Vector3d& p) const;
+
+    // Mean curvature H = (k1 + k2) / 2 [1/m] of the cut object's surface near p, positive where
+    // the surface is convex (a sphere of radius R gives 1/R). p is first projected onto the
+    // surface; H is averaged over the surface voxels within 2 voxels of that point, which
+    // smooths the facets of the input mesh. Flat: when |H| < 1 / (10 x bounding-box diagonal)
+    // the surface there is flatter than anything the body's own size can resolve and the
+    // result is exactly 0. The Hertz contact radius (§5.1) is 1 / H, infinite for 0 (a plane)
+    // and negative for a concave surface; callers must handle H == 0 explicitly.
+    double meanCurvature(const Eigen::Vector3d& p) const;
+
+    // Fine triangle mesh of the cut object's surface (OpenVDB volumeToMesh at adaptivity 0,
+    // quads split along their shorter diagonal), outward oriented. Crack slabs show as slits.
+    TriangleMesh visualMesh() const;
+    // visualMesh() decimated to about targetTriangles (MeshDecimation.h); stays closed and
+    // manifold when the visual mesh is.
+    TriangleMesh collisionMesh(int targetTriangles) const;
+
+    // Writes a swept crack surface into the crack grid as a slab and removes the slab from the
+    // object (CSG difference). `sheet` is any set of triangles in the body frame (it need not
+    // be closed or oriented; repeated sweeps of the same crack may overlap). `crackId` >= 0
+    // names the crack: the caller's id, reported by crackAt() and Fragment::incompleteCracks.
+    // Throws btfracture::Error naming sheet.name for an empty sheet, invalid indices, non-finite
+    // vertices or a negative crackId. A sheet that misses the body changes nothing.
+    void cutAlongSurface(const TriangleMesh& sheet, int crackId);
+    // Ids of all cracks cut so far, sorted.
+    std::vector<int> crackIds() const;
+
+    // Connected components of the object after the cuts (6-connected voxels, §5.2), each with
+    // mass properties measured on its own level set, volume class, meshes and convex hull.
+    // Crack slab material is split between the two sides of each crack, so the fragment
+    // volumes add up to massProperties().volume within the Heaviside error. Incomplete cracks
+    // (both sides in the same fragment) are filled for mass, collision and BEM surface and
+    // carried over into Fragment::levelSet (§5.3). Sorted by decreasing volume (ties: lowest
+    // voxel first). Throws btfracture::Error for invalid settings.
+    std::vector<Fragment> fragments(const FragmentSettings& settings) const;
+
+    struct Impl;  // OpenVDB grids (internal/LevelSetGrids.h)
+
+private:
+    explicit LevelSetBody(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace btfracture

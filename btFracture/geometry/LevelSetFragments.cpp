@@ -1,0 +1,250 @@
+// LevelSetBody::fragments(): segmentation of the cut object into connected components and the
+// level set, mass, meshes and hull of each (paper §5.2, §5.3). The second of the two
+// translation units that include OpenVDB.
+//
+// Each crack slab is a numerical gap 1.7 voxels thick. A fragment's own level set puts its
+// surface back on the crack sheet itself: near a crack (within the narrow band), with s the
+// signed distance to the nearest sheet triangle along its normal n, and L+ / L- the fragments
+// found 2-3 voxels along +n / -n,
+//   - L+ != L- (the crack separates here): phi_F = max(phi_solid, -s) for F = L+ and
+//     max(phi_solid, +s) for F = L-, so the slab's material is split between the two sides;
+//   - L+ == L- == F (the crack ends inside F, "incomplete"): phi_F = phi_solid, the slab is
+//     filled for mass, collision and BEM surface, and the crack is carried into F's own body.
+// Elsewhere phi_F is the object's distance inside F and positive outside.
+#include <btFracture/geometry/LevelSetBody.h>
+
+#include <btFracture/core/ClosestPoint.h>
+#include <btFracture/core/Error.h>
+#include <btFracture/core/Log.h>
+#include <btFracture/geometry/ConvexHull.h>
+#include <btFracture/geometry/MeshDecimation.h>
+#include <btFracture/geometry/internal/LevelSetGrids.h>
+
+#include <openvdb/tools/Composite.h>
+#include <openvdb/tools/LevelSetUtil.h>
+#include <openvdb/tools/Morphology.h>
+#include <openvdb/tools/Prune.h>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <tuple>
+
+namespace btfracture {
+namespace {
+
+using namespace levelset;
+using openvdb::BoolGrid;
+
+// A voxel within the narrow band of a crack sheet, with the fragments on either side.
+struct CrackVoxel {
+    Coord ijk;
+    double signedDistance;  // to the nearest sheet triangle, along its normal [m]
+    int triangle;           // index into the body's crack triangles
+    int plus, minus;        // fragment labels 2-3 voxels along +n / -n, -1 if none
+};
+
+struct Component {
+    BoolGrid::Ptr mask;
+    openvdb::Index64 voxels = 0;
+    Coord firstVoxel;  // first active voxel in tree order (deterministic tie-break)
+};
+
+}  // namespace
+
+std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) const {
+    settings.validate();
+    const Impl& body = *impl_;
+    const double dx = body.voxelSize;
+    const float background = kHalfWidthVoxels * static_cast<float>(dx);
+
+    // 1. Connected components of the object's interior (6-connected voxels), in a
+    //    deterministic order: most voxels first, then lowest first voxel.
+    BoolGrid::Ptr interior = openvdb::tools::sdfInteriorMask(*body.object);
+    std::vector<BoolGrid::Ptr> masks;
+    openvdb::tools::extractActiveVoxelSegmentMasks(*interior, masks);
+    interior.reset();
+    std::vector<Component> components;
+    for (auto& mask : masks) {
+        Component c;
+        c.voxels = mask->activeVoxelCount();
+        if (c.voxels == 0) continue;
+        c.firstVoxel = mask->cbeginValueOn().getCoord();  // first in tree order
+        c.mask = mask;
+        components.push_back(std::move(c));
+    }
+    masks.clear();
+    std::sort(components.begin(), components.end(), [](const Component& x, const Component& y) {
+        return std::tie(y.voxels, x.firstVoxel) < std::tie(x.voxels, y.firstVoxel);
+    });
+
+    // Dust: too few voxels to matter (dropped before any work is spent on them).
+    const double voxelVolume = dx * dx * dx;
+    double dustVolume = 0.0;
+    int dustCount = 0;
+    while (!components.empty() && static_cast<double>(components.back().voxels) * voxelVolume <=
+                                      settings.dustMaxFraction * body.originalVolume) {
+        dustVolume += static_cast<double>(components.back().voxels) * voxelVolume;
+        ++dustCount;
+        components.pop_back();
+    }
+
+    Int32Grid::Ptr labels = Int32Grid::create(-1);
+    {
+        auto acc = labels->getAccessor();
+        for (int k = 0; k < static_cast<int>(components.size()); ++k)
+            for (auto it = components[k].mask->cbeginValueOn(); it; ++it) acc.setValueOn(it.getCoord(), k);
+    }
+
+    // 2. Crack voxels with the fragments on either side of their sheet.
+    std::vector<CrackVoxel> crackVoxels;
+    if (!body.crackTriangles.empty()) {
+        auto solidAcc = body.solid->getConstAccessor();
+        auto triangleAcc = body.crackTriangle->getConstAccessor();
+        auto labelAcc = labels->getConstAccessor();
+        auto labelAt = [&](const Eigen::Vector3d& x) { return labelAcc.getValue(nearestVoxel(x, dx)); };
+        for (auto it = body.crack->cbeginValueOn(); it; ++it) {
+            const Coord ijk = it.getCoord();
+            if (!(solidAcc.getValue(ijk) < background)) continue;
+            const int t = triangleAcc.getValue(ijk);
+            if (t < 0) continue;
+            const CrackTriangle& tri = body.crackTriangles[t];
+            const Eigen::Vector3d x = voxelCentre(ijk, dx);
+            Eigen::Vector3d n = (tri.b - tri.a).cross(tri.c - tri.a);
+            if (!(n.norm() > 0.0)) continue;
+            n.normalize();
+            const Eigen::Vector3d offset = x - closestPointAndFeature(x, tri.a, tri.b, tri.c).point;
+            const double s = offset.dot(n) >= 0.0 ? offset.norm() : -offset.norm();
+            CrackVoxel v{ijk, s, t, -1, -1};
+            for (double probe : {2.0, 3.0})
+                if (v.plus < 0) v.plus = labelAt(x + (probe * dx - s) * n);
+            for (double probe : {2.0, 3.0})
+                if (v.minus < 0) v.minus = labelAt(x - (probe * dx + s) * n);
+            if (v.plus >= 0 || v.minus >= 0) crackVoxels.push_back(v);
+        }
+    }
+    std::vector<std::vector<int>> crackVoxelsOf(components.size());
+    for (int i = 0; i < static_cast<int>(crackVoxels.size()); ++i) {
+        const CrackVoxel& v = crackVoxels[i];
+        if (v.plus >= 0) crackVoxelsOf[v.plus].push_back(i);
+        if (v.minus >= 0 && v.minus != v.plus) crackVoxelsOf[v.minus].push_back(i);
+    }
+
+    // 3. Each fragment's level set, mass, meshes and hull.
+    std::vector<Fragment> fragments;
+    auto objectAcc = body.object->getConstAccessor();
+    auto solidAcc = body.solid->getConstAccessor();
+    auto crackAcc = body.crack->getConstAccessor();
+    auto labelAcc = labels->getConstAccessor();
+    for (int k = 0; k < static_cast<int>(components.size()); ++k) {
+        // Narrow band around the component: dilate by the band width plus one voxel.
+        openvdb::BoolTree band(components[k].mask->tree());
+        openvdb::tools::dilateActiveValues(band, static_cast<int>(kHalfWidthVoxels) + 1,
+                                           openvdb::tools::NN_FACE_EDGE_VERTEX, openvdb::tools::IGNORE_TILES);
+        FloatGrid::Ptr phi = makeLevelSet(dx);
+        auto phiAcc = phi->getAccessor();
+        auto assign = [&](const Coord& ijk, float value) {
+            if (value >= background) {
+                phiAcc.setValueOff(ijk, background);
+            } else if (value <= -background) {
+                phiAcc.setValueOff(ijk, -background);
+            } else {
+                phiAcc.setValueOn(ijk, value);
+            }
+        };
+        for (auto it = band.cbeginValueOn(); it; ++it) {
+            const Coord ijk = it.getCoord();
+            const float o = objectAcc.getValue(ijk);
+            const int label = labelAcc.getValue(ijk);
+            // Inside another fragment: outside this one (crack voxels below refine this).
+            assign(ijk, label == k || o >= 0.0f ? o : background);
+        }
+        // Crack voxels: surface on the sheet where the crack separates, filled where it ends inside.
+        std::set<int> incomplete;
+        FloatGrid::Ptr keptCrack = makeLevelSet(dx);
+        Int32Grid::Ptr keptTriangle = Int32Grid::create(-1);
+        keptTriangle->setTransform(phi->transformPtr());
+        auto keptCrackAcc = keptCrack->getAccessor();
+        auto keptTriangleAcc = keptTriangle->getAccessor();
+        for (int i : crackVoxelsOf[k]) {
+            const CrackVoxel& v = crackVoxels[i];
+            const float solid = solidAcc.getValue(v.ijk);
+            if (v.plus == k && v.minus == k) {
+                assign(v.ijk, solid);
+                const float slab = crackAcc.getValue(v.ijk);
+                keptCrackAcc.setValueOn(v.ijk, slab);
+                keptTriangleAcc.setValueOn(v.ijk, v.triangle);
+                if (slab < 0.0f && solid < 0.0f) incomplete.insert(body.crackTriangles[v.triangle].crackId);
+            } else {
+                const double side = v.plus == k ? -v.signedDistance : v.signedDistance;
+                assign(v.ijk, std::max(solid, static_cast<float>(side)));
+            }
+        }
+        openvdb::tools::pruneLevelSet(phi->tree());
+
+        Fragment f;
+        f.name = body.name + "/" + std::to_string(fragments.size());
+        f.mass = integrateMass(*phi);
+        if (!(f.mass.volume > settings.dustMaxFraction * body.originalVolume)) {
+            dustVolume += std::max(0.0, f.mass.volume);
+            ++dustCount;
+            continue;
+        }
+        f.fractionOfOriginal = f.mass.volume / body.originalVolume;
+        f.fractionOfParent = f.mass.volume / body.mass.volume;
+        f.volumeClass = classifyFragment(f.mass.volume, body.mass.volume, body.originalVolume, settings);
+        f.incompleteCracks.assign(incomplete.begin(), incomplete.end());
+
+        TriangleMesh surface = meshFromGrid(*phi, f.name);
+        if (surface.triangles.size() < 4) {
+            logf(LogLevel::Warning, f.name, ": fragment of ", f.mass.volume, " m^3 (",
+                 surface.vertices.size(), " surface vertices) is too thin to mesh; dropped");
+            dustVolume += f.mass.volume;
+            ++dustCount;
+            continue;
+        }
+        f.collisionMesh = decimateMesh(surface, settings.collisionTriangles);
+        f.collisionMesh.name = f.name + " (collision)";
+        f.convexHull = convexHullMesh(surface.vertices, f.name + " (convex hull)");
+
+        // The fragment as a body of its own, with its incomplete cracks still cut into it.
+        auto child = std::make_unique<Impl>();
+        child->name = f.name;
+        child->voxelSize = dx;
+        child->originalVolume = body.originalVolume;
+        child->solid = phi;
+        child->crack = keptCrack;
+        child->crackTriangle = keptTriangle;
+        if (!incomplete.empty()) {
+            // Keep only the triangles the kept crack voxels refer to, renumbered in order.
+            std::map<int, int> renumber;
+            for (auto it = keptTriangle->tree().beginValueOn(); it; ++it) renumber.emplace(*it, 0);
+            for (auto& [old, fresh] : renumber) {
+                fresh = static_cast<int>(child->crackTriangles.size());
+                child->crackTriangles.push_back(body.crackTriangles[old]);
+            }
+            for (auto it = keptTriangle->tree().beginValueOn(); it; ++it) it.setValue(renumber[*it]);
+        } else {
+            child->crack = makeLevelSet(dx);
+            child->crackTriangle = Int32Grid::create(-1);
+            child->crackTriangle->setTransform(phi->transformPtr());
+        }
+        child->mass = f.mass;
+        child->rebuildObject();
+        f.visualMesh = incomplete.empty() ? surface : meshFromGrid(*child->object, f.name + " (visual)");
+        if (f.visualMesh.name == f.name) f.visualMesh.name = f.name + " (visual)";
+        if (f.volumeClass == FragmentClass::Breakable || f.volumeClass == FragmentClass::KeepsParentSolver) {
+            f.surfaceMesh = std::move(surface);
+            f.surfaceMesh.name = f.name + " (surface)";
+            f.levelSet.reset(new LevelSetBody(std::move(child)));
+        }
+        fragments.push_back(std::move(f));
+    }
+    if (dustCount > 0)
+        logf(LogLevel::Info, body.name, ": dropped ", dustCount, " dust fragment(s) of ", dustVolume,
+             " m^3 in total (<= ", settings.dustMaxFraction, " of the original volume each, or unmeshable)");
+    return fragments;
+}
+
+}  // namespace btfracture

@@ -1,0 +1,71 @@
+#pragma once
+// Internal to btFracture/geometry: the OpenVDB grids behind LevelSetBody and the helpers its two
+// OpenVDB translation units share (LevelSetBody.cpp, LevelSetFragments.cpp). Includes OpenVDB,
+// so it must never be included from a public header or from any other file.
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/core/TriangleMesh.h>
+#include <btFracture/geometry/LevelSetBody.h>
+
+#include <openvdb/openvdb.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace btfracture {
+namespace levelset {
+
+using openvdb::Coord;
+using openvdb::FloatGrid;
+using openvdb::Int32Grid;
+
+constexpr float kHalfWidthVoxels = 3.0f;            // narrow band, each side of the surface
+constexpr double kCrackHalfThicknessVoxels = 0.85;  // slab = |distance to sheet| < this
+
+struct CrackTriangle {
+    Eigen::Vector3d a, b, c;
+    int crackId = -1;
+};
+
+// Empty level set (background +3 voxels) with a linear transform of `voxelSize`.
+FloatGrid::Ptr makeLevelSet(double voxelSize);
+
+// Volume, centre of mass and inertia (density 1) of phi < 0: each voxel contributes the part of
+// it below the tangent plane of phi (exact for planar surfaces), interior tiles exactly.
+// Deterministic: independent of the thread count.
+MassProperties integrateMass(const FloatGrid& phi);
+
+// Closed triangle mesh of the zero level set, outward oriented (adaptivity 0).
+TriangleMesh meshFromGrid(const FloatGrid& phi, const std::string& name);
+
+// Index-space centre of voxel ijk in world units.
+inline Eigen::Vector3d voxelCentre(const Coord& ijk, double voxelSize) {
+    return Eigen::Vector3d(ijk.x(), ijk.y(), ijk.z()) * voxelSize;
+}
+inline Coord nearestVoxel(const Eigen::Vector3d& p, double voxelSize) {
+    const Eigen::Vector3d q = p / voxelSize;
+    return Coord(static_cast<int>(std::floor(q.x() + 0.5)), static_cast<int>(std::floor(q.y() + 0.5)),
+                 static_cast<int>(std::floor(q.z() + 0.5)));
+}
+
+}  // namespace levelset
+
+struct LevelSetBody::Impl {
+    std::string name;
+    double voxelSize = 0.0;
+    double originalVolume = 0.0;
+    double boundingDiagonal = 0.0;  // of the solid [m], sets the flat-curvature threshold
+    MassProperties mass;            // of the solid
+
+    levelset::FloatGrid::Ptr solid;          // uncut body
+    levelset::FloatGrid::Ptr object;         // solid minus crack slabs
+    levelset::FloatGrid::Ptr crack;          // union of crack slabs (negative inside a slab)
+    levelset::Int32Grid::Ptr crackTriangle;  // nearest crack triangle (index into crackTriangles)
+    std::vector<levelset::CrackTriangle> crackTriangles;
+
+    // Bounding diagonal and object (solid minus `crack` when cracks exist) from `solid`.
+    void rebuildObject();
+};
+
+}  // namespace btfracture

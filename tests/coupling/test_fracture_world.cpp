@@ -1,0 +1,478 @@
+// The Bullet coupling end to end with the plane-split stand-in engine (PlaneSplitFractureEngine).
+#include "CouplingScene.h"
+
+#include <btFracture/core/Error.h>
+#include <btFracture/core/Log.h>
+#include <btFracture/dynamics/HertzContact.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+
+using namespace btfracture;
+using namespace btfracture::test;
+
+namespace {
+
+// Records the world's momentum at the moment of the swap (listener runs before the replay).
+struct SwapProbe : FractureListener {
+    explicit SwapProbe(btDiscreteDynamicsWorld& w) : world(w) {}
+    void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
+                         const FractureEventInfo& info) override {
+        ++events;
+        atSwap = probe(world);
+        parentInWorld = parent.isInWorld();
+        fragmentCount = static_cast<int>(fragments.size());
+        lastInfo = info;
+    }
+    btDiscreteDynamicsWorld& world;
+    int events = 0;
+    WorldProbe atSwap;
+    bool parentInWorld = true;
+    int fragmentCount = 0;
+    FractureEventInfo lastInfo;
+};
+
+double relative(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double scale) {
+    return (a - b).norm() / scale;
+}
+
+}  // namespace
+
+TEST(FractureWorld, BallBreaksSlabAboveThreshold) {
+    Scene scene;
+    SwapProbe listener(*scene.world);
+    scene.world->addFractureListener(&listener);
+    for (int i = 0; i < 10 && listener.events == 0; ++i) scene.step();
+    const FractureStatistics& s = scene.world->fractureStatistics();
+    EXPECT_EQ(listener.events, 1);
+    EXPECT_EQ(s.engineCalls, 1u);
+    EXPECT_EQ(s.fractureEvents, 1u);
+    EXPECT_EQ(s.bemBuilds, 1u);
+    EXPECT_EQ(s.replayedSteps, 1u);
+    EXPECT_EQ(listener.fragmentCount, 2);
+    EXPECT_FALSE(listener.parentInWorld);
+    EXPECT_FALSE(scene.slab->isInWorld());
+    const auto fragments = scene.fragments();
+    ASSERT_EQ(fragments.size(), 2u);
+    for (btFractureRigidBody* f : fragments) {
+        EXPECT_TRUE(f->isFracturable());  // ~50 % pieces are breakable again
+        EXPECT_EQ(f->settings().refractureDepth, 1);
+        EXPECT_NEAR(f->originalVolume(), scene.slab->volume(), 1e-12);
+    }
+    EXPECT_GT(listener.lastInfo.impulseSum, 10.0);
+    EXPECT_GE(listener.lastInfo.contacts, 1);
+    // The parent's contact manifolds left with it.
+    for (int m = 0; m < scene.dispatcher.getNumManifolds(); ++m) {
+        const btPersistentManifold* manifold = scene.dispatcher.getManifoldByIndexInternal(m);
+        EXPECT_NE(manifold->getBody0(), scene.slab.get());
+        EXPECT_NE(manifold->getBody1(), scene.slab.get());
+    }
+}
+
+TEST(FractureWorld, ContactsReachTheEngineInTheBodyFrame) {
+    // An engine that records and breaks nothing.
+    struct Recorder : FractureEngine {
+        std::vector<BodyContact> contacts;
+        double mass = 0.0;
+        FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>& c,
+                                 FractureStatistics&) override {
+            if (contacts.empty()) {
+                contacts = c;
+                mass = 1.0 / double(body.getInvMass());
+            }
+            return {};
+        }
+    };
+    Scene scene;
+    auto recorder = std::make_unique<Recorder>();
+    Recorder* rec = recorder.get();
+    scene.world->setFractureEngine(std::move(recorder));
+    const btTransform slabPose = scene.slab->getWorldTransform();
+    for (int i = 0; i < 10 && rec->contacts.empty(); ++i) scene.step();
+    ASSERT_FALSE(rec->contacts.empty());
+    EXPECT_EQ(scene.world->fractureStatistics().fractureEvents, 0u);
+    EXPECT_TRUE(scene.slab->isInWorld());
+    // The hardest contact is the ball's: on the top face under the ball, pointing down into the slab.
+    const BodyContact* ball = &rec->contacts.front();
+    for (const BodyContact& c : rec->contacts)
+        if (c.approachSpeed > ball->approachSpeed) ball = &c;
+    const Eigen::Vector3d worldPoint =
+        eig(slabPose *
+            btVector3(btScalar(ball->point.x()), btScalar(ball->point.y()), btScalar(ball->point.z())));
+    EXPECT_NEAR(worldPoint.x(), 0.05, 1e-3);
+    EXPECT_NEAR(worldPoint.y(), 0.05, 2e-3);
+    EXPECT_NEAR(worldPoint.z(), 0.03, 1e-3);
+    const Eigen::Vector3d worldDirection =
+        eig(slabPose.getBasis() * btVector3(btScalar(ball->direction.x()), btScalar(ball->direction.y()),
+                                            btScalar(ball->direction.z())));
+    EXPECT_LT((worldDirection - Eigen::Vector3d(0, -1, 0)).norm(), 1e-3);
+    EXPECT_NEAR(ball->approachSpeed, 10.0, 0.05);  // 10 m/s plus at most one step of gravity
+    EXPECT_GT(ball->impulse, 10.0);
+    // Hertz: steel ball (r 5 cm) on glass, flat-ish face capped at the slab size.
+    const double ballMass = 1.0 / double(scene.ball->getInvMass());
+    const HertzImpact h =
+        hertzImpact(HertzBody{70e9, 0.22, 1.0 / rec->mass, scene.slab->meanCurvatureAt(ball->point)},
+                    HertzBody{210e9, 0.3, 1.0 / ballMass, 1.0 / 0.05}, ball->approachSpeed,
+                    scene.slab->characteristicLength());
+    EXPECT_NEAR(ball->duration, h.contactDuration, 1e-12);
+    EXPECT_NEAR(ball->effectiveMass, 1.0 / (1.0 / rec->mass + 1.0 / ballMass), 1e-6);
+    EXPECT_GT(ball->duration, 1e-6);
+    EXPECT_LT(ball->duration, 1e-3);
+    // Resting contacts with the ground point up into the slab and have the floored speed's duration.
+    int groundContacts = 0;
+    for (const BodyContact& c : rec->contacts) {
+        const Eigen::Vector3d d =
+            eig(slabPose.getBasis() *
+                btVector3(btScalar(c.direction.x()), btScalar(c.direction.y()), btScalar(c.direction.z())));
+        if (d.y() > 0.99) ++groundContacts;
+    }
+    EXPECT_GE(groundContacts, 1);
+}
+
+TEST(FractureWorld, ReplayKeepsBystandersAsleep) {
+    Scene scene;
+    // A box far away that has fallen asleep on the ground.
+    btBoxShape boxShape(btVector3(btScalar(0.1), btScalar(0.1), btScalar(0.1)));
+    btVector3 inertia;
+    boxShape.calculateLocalInertia(1, inertia);
+    btRigidBody box(btRigidBody::btRigidBodyConstructionInfo(1, nullptr, &boxShape, inertia));
+    box.getWorldTransform().setOrigin(btVector3(2, btScalar(0.1), 2));
+    scene.world->addRigidBody(&box);
+    scene.world->setFractureEnabled(false);
+    scene.ball->setLinearVelocity(btVector3(0, 0, 0));
+    scene.ball->getWorldTransform().setOrigin(btVector3(-2, 1, -2));
+    scene.step(600);
+    ASSERT_EQ(box.getActivationState(), ISLAND_SLEEPING);
+    const btTransform asleep = box.getWorldTransform();
+    // Now throw the ball at the slab and break it.
+    scene.world->setFractureEnabled(true);
+    scene.ball->activate(true);
+    scene.ball->getWorldTransform().setOrigin(btVector3(btScalar(0.05), btScalar(0.13), btScalar(0.03)));
+    scene.ball->setLinearVelocity(btVector3(0, -10, 0));
+    scene.slab->activate(true);
+    scene.step(5);
+    EXPECT_EQ(scene.world->fractureStatistics().fractureEvents, 1u);
+    EXPECT_EQ(box.getActivationState(), ISLAND_SLEEPING);
+    EXPECT_EQ(std::memcmp(&asleep.getOrigin(), &box.getWorldTransform().getOrigin(), sizeof(btVector3)), 0);
+    scene.world->removeRigidBody(&box);
+}
+
+TEST(FractureWorld, BelowThresholdNothingIsCalledOrBuilt) {
+    {  // The same throw against a threshold it does not reach.
+        SceneOptions options;
+        options.impulseThreshold = 1e4;
+        Scene scene(options);
+        scene.step(60);
+        const FractureStatistics& s = scene.world->fractureStatistics();
+        EXPECT_GT(s.bodiesChecked, 0u);  // the hook looked at the slab ...
+        EXPECT_EQ(s.bodiesTriggered, 0u);
+        EXPECT_EQ(s.engineCalls, 0u);  // ... and did nothing else
+        EXPECT_EQ(s.bemBuilds, 0u);
+        EXPECT_EQ(scene.slab->fractureState(), nullptr);
+        EXPECT_TRUE(scene.slab->isInWorld());
+    }
+    {  // A gentle throw against the default threshold.
+        SceneOptions options;
+        options.ballSpeed = 0.3;
+        Scene scene(options);
+        scene.step(60);
+        EXPECT_GT(scene.world->fractureStatistics().bodiesChecked, 0u);
+        EXPECT_EQ(scene.world->fractureStatistics().engineCalls, 0u);
+        EXPECT_EQ(scene.world->fractureStatistics().bemBuilds, 0u);
+    }
+}
+
+TEST(FractureWorld, SwapConservesMassMomentumAndDoesNotPop) {
+    // Resting on the ground (hit at two places), and in free flight, moving and spinning, so that
+    // the fragments' v + w x r and rotated inertia matter.
+    for (int variant = 0; variant < 3; ++variant) {
+        SceneOptions options;
+        options.ballX = variant == 1 ? -0.12 : 0.05;
+        if (variant == 2) {
+            options.freeFlight = true;
+            options.slabVelocity = Eigen::Vector3d(0.3, 0.5, -0.2);
+            options.slabAngularVelocity = Eigen::Vector3d(0.4, 2.0, -0.7);
+        }
+        const double ballX = options.ballX;
+        Scene scene(options);
+        SwapProbe listener(*scene.world);
+        scene.world->addFractureListener(&listener);
+        for (int i = 0; i < 10 && listener.events == 0; ++i) {
+            const WorldProbe before = probe(*scene.world);
+            scene.step();
+            if (listener.events == 0) continue;
+            const WorldProbe& swap = listener.atSwap;
+            const WorldProbe after = probe(*scene.world);
+            EXPECT_EQ(swap.bodies, before.bodies + 1);
+            EXPECT_NEAR(swap.mass, before.mass, 1e-6 * before.mass);
+            const double pScale = std::max(before.linear.norm(), 1e-12);
+            const double lScale = std::max(before.angular.norm(), 1e-12);
+            EXPECT_LT(relative(swap.linear, before.linear, pScale), 1e-6)
+                << swap.linear.transpose() << " vs " << before.linear.transpose();
+            EXPECT_LT(relative(swap.angular, before.angular, lScale), 1e-6)
+                << swap.angular.transpose() << " vs " << before.angular.transpose();
+            // No popping: the replayed step adds no more than 1 % kinetic energy.
+            EXPECT_LE(after.kinetic, 1.01 * before.kinetic) << after.kinetic << " vs " << before.kinetic;
+            std::printf(
+                "swap (variant %d, ball x = %.2f): mass %.2e, momentum %.2e, angular momentum %.2e (relative "
+                "differences); kinetic energy after replay / before = %.4f; largest push %.2e m\n",
+                variant, ballX, std::abs(swap.mass - before.mass) / before.mass,
+                relative(swap.linear, before.linear, pScale), relative(swap.angular, before.angular, lScale),
+                after.kinetic / before.kinetic, listener.lastInfo.maxSeparationPush);
+            EXPECT_LT(listener.lastInfo.maxSeparationPush, 1e-3);
+        }
+        EXPECT_EQ(listener.events, 1) << "variant " << variant;
+    }
+}
+
+TEST(FractureWorld, SameSceneTwiceGivesBitIdenticalFragments) {
+    auto run = [] {
+        Scene scene;
+        scene.step(120);
+        std::vector<btTransform> poses;
+        for (btFractureRigidBody* f : scene.fragments()) poses.push_back(f->getWorldTransform());
+        return poses;
+    };
+    const auto first = run(), second = run();
+    ASSERT_GE(first.size(), 2u);
+    ASSERT_EQ(first.size(), second.size());
+    for (std::size_t i = 0; i < first.size(); ++i) {
+        EXPECT_EQ(std::memcmp(&first[i].getBasis(), &second[i].getBasis(), sizeof(btMatrix3x3)), 0) << i;
+        EXPECT_EQ(std::memcmp(&first[i].getOrigin(), &second[i].getOrigin(), sizeof(btVector3)), 0) << i;
+    }
+}
+
+TEST(FractureWorld, RestingContactNeverTriggers) {
+    SceneOptions options;
+    options.ballSpeed = 0.0;
+    options.ballX = 0.0;
+    options.ballZ = 0.0;
+    Scene scene(options);
+    // The ball starts 3 cm above the slab, falls and comes to rest on it: the slab carries the
+    // ball's and its own weight for 10,000 steps (42 s).
+    scene.step(10000);
+    const FractureStatistics& s = scene.world->fractureStatistics();
+    EXPECT_EQ(s.steps, 10000u);
+    EXPECT_GT(s.bodiesChecked, 100u);
+    EXPECT_EQ(s.bodiesTriggered, 0u);
+    EXPECT_EQ(s.engineCalls, 0u);
+    EXPECT_TRUE(scene.slab->isInWorld());
+    EXPECT_NEAR(double(scene.slab->getWorldTransform().getOrigin().y()), 0.025, 2e-3);
+}
+
+TEST(FractureWorld, SwitchOffAndNonFracturableCostNothing) {
+    {
+        Scene scene;
+        scene.world->setFractureEnabled(false);
+        scene.step(20);
+        EXPECT_EQ(scene.world->fractureStatistics().steps, 0u);
+        EXPECT_EQ(scene.world->fractureStatistics().bodiesChecked, 0u);
+        EXPECT_TRUE(scene.slab->isInWorld());
+    }
+    {
+        Scene scene;
+        FractureBodySettings settings = scene.slab->settings();
+        settings.fracturable = false;
+        scene.slab->setSettings(settings);
+        scene.step(20);
+        EXPECT_EQ(scene.world->fractureStatistics().bodiesChecked, 0u);
+        EXPECT_EQ(scene.world->fractureStatistics().engineCalls, 0u);
+        EXPECT_TRUE(scene.slab->isInWorld());
+    }
+    {  // No engine: logged once, nothing breaks.
+        SceneOptions options;
+        options.withEngine = false;
+        Scene scene(options);
+        scene.step(20);
+        EXPECT_EQ(scene.world->fractureStatistics().steps, 0u);
+        EXPECT_TRUE(scene.slab->isInWorld());
+    }
+}
+
+namespace {
+
+// The stand-in engine with the cut plane chosen by the test: normal along the body axis of the
+// slab's largest extent, at a given fraction of that extent (a box: volume fraction = extent
+// fraction).
+class ChipEngine : public PlaneSplitFractureEngine {
+public:
+    explicit ChipEngine(double fraction) : fraction_(fraction) {}
+    FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>&,
+                             FractureStatistics& stats) override {
+        ensureState(body, stats);
+        Eigen::Vector3d lo = body.mesh().vertices.front(), hi = lo;
+        for (const auto& v : body.mesh().vertices) {
+            lo = lo.cwiseMin(v);
+            hi = hi.cwiseMax(v);
+        }
+        int axis = 0;
+        (hi - lo).maxCoeff(&axis);
+        Eigen::Vector3d point = lo;
+        point[axis] += fraction_ * (hi - lo)[axis];
+        return split(body, point, Eigen::Vector3d::Unit(axis));
+    }
+
+private:
+    double fraction_;
+};
+
+struct FirstEvent : FractureListener {
+    std::vector<btFractureRigidBody*> fragments;
+    void onFractureEvent(btFractureRigidBody&, const std::vector<btFractureRigidBody*>& f,
+                         const FractureEventInfo&) override {
+        if (fragments.empty()) fragments = f;
+    }
+};
+
+}  // namespace
+
+TEST(FractureWorld, FragmentClassesAndRefractureDepth) {
+    struct Case {
+        double fraction;
+        FragmentSpec::Class expectedSmall;
+    };
+    // Chips of 2.5 %, 1.25 % and 0.25 % of the slab: breakable, mesh, convex hull (§5.2); the
+    // rest (> 95 %) keeps the parent's solver.
+    for (const Case& c :
+         {Case{0.025, FragmentSpec::Class::Breakable}, Case{0.0125, FragmentSpec::Class::Mesh},
+          Case{0.0025, FragmentSpec::Class::ConvexHull}}) {
+        SceneOptions options;
+        options.slabHalfExtents = Eigen::Vector3d(0.2, 0.025, 0.15);  // distinct principal axes
+        Scene scene(options);
+        scene.world->setFractureEngine(std::make_unique<ChipEngine>(c.fraction));
+        FirstEvent grab;
+        scene.world->addFractureListener(&grab);
+        for (int i = 0; i < 10 && grab.fragments.empty(); ++i) scene.step();
+        ASSERT_EQ(grab.fragments.size(), 2u) << c.fraction;
+        btFractureRigidBody* big =
+            grab.fragments[0]->volume() > grab.fragments[1]->volume() ? grab.fragments[0] : grab.fragments[1];
+        btFractureRigidBody* small = big == grab.fragments[0] ? grab.fragments[1] : grab.fragments[0];
+        EXPECT_NEAR(small->volume() / scene.slab->volume(), c.fraction, 1e-9);
+        // The > 95 % piece keeps the parent's solver state (the stand-in's balancer) and depth.
+        EXPECT_NE(big->fractureState(), nullptr);
+        EXPECT_EQ(scene.slab->fractureState(), nullptr);
+        EXPECT_TRUE(big->isFracturable());
+        EXPECT_EQ(big->settings().refractureDepth, 0);
+        EXPECT_EQ(scene.world->fractureStatistics().bemBuilds, 1u);
+        const bool smallBreaks = c.expectedSmall == FragmentSpec::Class::Breakable;
+        EXPECT_EQ(small->isFracturable(), smallBreaks) << c.fraction;
+        EXPECT_EQ(small->settings().refractureDepth, 1);
+        EXPECT_EQ(small->fractureState(), nullptr);
+        EXPECT_EQ(small->shapeStorage().kind(), CollisionShapeKind::ConvexHull);  // convex pieces
+    }
+}
+
+TEST(FractureWorld, SplittingARestingSlabDoesNotPop) {
+    // No impact at all: the slab rests on the ground and is cut in two in place. Any overlap
+    // between the halves or error in their placement would show up as kinetic energy.
+    SceneOptions options;
+    options.ballX = 2.0;  // the ball lands on the ground, far away
+    options.impulseThreshold = 1e9;
+    options.maxRefractureDepth = 0;  // the halves (threshold 0 inherited) must not break again
+    Scene scene(options);
+    scene.step(240);
+    scene.world->setFractureEngine(std::make_unique<ChipEngine>(0.5));
+    FractureBodySettings settings = scene.slab->settings();
+    settings.impulseThreshold = 0.0;
+    scene.slab->setSettings(settings);
+    scene.slab->activate(true);
+    const WorldProbe before = probe(*scene.world);
+    scene.step();
+    ASSERT_EQ(scene.world->fractureStatistics().fractureEvents, 1u);
+    const WorldProbe after = probe(*scene.world);
+    double peak = after.kinetic;
+    for (int i = 0; i < 120; ++i) {
+        scene.step();
+        peak = std::max(peak, probe(*scene.world).kinetic);
+    }
+    // Fresh contacts solved without warm starting leave a residue: 5e-4 J is the 20 kg slab at
+    // 7 mm/s, or its weight lifted by 2.5 um. A pop (halves overlapping by a collision margin,
+    // ~3 mm, pushed apart in one step) would be of order 0.1 J.
+    EXPECT_LE(after.kinetic, 1.01 * before.kinetic + 5e-4) << before.kinetic << " -> " << after.kinetic;
+    EXPECT_LT(peak, 5e-4);
+    std::printf(
+        "resting split: kinetic energy %.2e J before, %.2e J after the replayed step, peak %.2e J over 0.5 "
+        "s\n",
+        before.kinetic, after.kinetic, peak);
+    for (btFractureRigidBody* f : scene.fragments())
+        EXPECT_NEAR(double(f->getWorldTransform().getOrigin().y()), 0.025, 1e-3);
+}
+
+TEST(FractureWorld, RefractureStopsAtMaxDepth) {
+    {  // Depth 0: the slab breaks once, its halves never.
+        SceneOptions options;
+        options.maxRefractureDepth = 0;
+        Scene scene(options);
+        scene.step(60);
+        EXPECT_EQ(scene.world->fractureStatistics().fractureEvents, 1u);
+        const auto fragments = scene.fragments();
+        ASSERT_EQ(fragments.size(), 2u);
+        for (btFractureRigidBody* f : fragments) {
+            EXPECT_FALSE(f->isFracturable());
+            EXPECT_EQ(f->settings().refractureDepth, 1);
+        }
+    }
+    {  // Depth 2 and a low threshold: pieces break again under the ball, but no generation beyond
+       // 3 exists.
+        SceneOptions options;
+        options.maxRefractureDepth = 2;
+        options.impulseThreshold = 1.5;
+        Scene scene(options);
+        struct Depths : FractureListener {
+            std::vector<int> parents;
+            void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>&,
+                                 const FractureEventInfo&) override {
+                parents.push_back(parent.settings().refractureDepth);
+            }
+        } depths;
+        scene.world->addFractureListener(&depths);
+        scene.step(60);
+        ASSERT_GT(depths.parents.size(), 1u);
+        EXPECT_GE(*std::max_element(depths.parents.begin(), depths.parents.end()), 1);  // fragments broke
+        for (int depth : depths.parents) EXPECT_LE(depth, 2);
+        for (btFractureRigidBody* f : scene.fragments()) {
+            EXPECT_LE(f->settings().refractureDepth, 3);
+            if (f->settings().refractureDepth > 2) {
+                EXPECT_FALSE(f->isFracturable());
+            }
+        }
+    }
+}
+
+TEST(FractureWorld, EngineErrorMakesBodyUnbreakable) {
+    struct Failing : FractureEngine {
+        FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>&,
+                                 FractureStatistics&) override {
+            throw Error(body.name() + ": test engine refuses");
+        }
+    };
+    Scene scene;
+    scene.world->setFractureEngine(std::make_unique<Failing>());
+    std::vector<std::string> messages;
+    setLogSink([&](LogLevel, const std::string& m) { messages.push_back(m); });
+    scene.step(30);
+    setLogSink(nullptr);
+    const FractureStatistics& s = scene.world->fractureStatistics();
+    EXPECT_EQ(s.engineCalls, 1u);
+    EXPECT_EQ(s.engineFailures, 1u);
+    EXPECT_FALSE(scene.slab->isFracturable());
+    EXPECT_TRUE(scene.slab->isInWorld());
+    ASSERT_FALSE(messages.empty());
+    EXPECT_NE(messages.back().find("test engine refuses"), std::string::npos) << messages.back();
+}
+
+TEST(FractureWorld, RemovingAFragmentHandsItToTheCaller) {
+    Scene scene;
+    scene.step(10);
+    auto fragments = scene.fragments();
+    ASSERT_GE(fragments.size(), 2u);
+    EXPECT_TRUE(scene.world->ownsBody(fragments[0]));
+    scene.world->removeRigidBody(fragments[0]);
+    EXPECT_FALSE(scene.world->ownsBody(fragments[0]));
+    std::unique_ptr<btFractureRigidBody> mine(fragments[0]);  // the caller deletes it
+    EXPECT_EQ(scene.fragments().size(), fragments.size() - 1);
+    scene.step(10);
+}

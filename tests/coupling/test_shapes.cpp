@@ -1,0 +1,106 @@
+#include "TestMeshes.h"
+
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/dynamics/CollisionShapeBuilder.h>
+#include <btFracture/dynamics/ConvexHullMesh.h>
+#include <btFracture/dynamics/FragmentSeparation.h>
+#include <btFracture/dynamics/btFractureDynamicsWorld.h>
+#include <btFracture/dynamics/btFractureRigidBody.h>
+
+#include <btBulletDynamicsCommon.h>
+
+#include <gtest/gtest.h>
+
+using namespace btfracture;
+
+TEST(CollisionShapes, ConvexHullIsShrunkByItsMargin) {
+    const TriangleMesh box = boxMesh(Eigen::Vector3d(0.2, 0.1, 0.3), "box");
+    CollisionShapeOptions options;
+    options.margin = 0.01;
+    const auto storage = buildCollisionShape(box, CollisionShapeKind::ConvexHull, options);
+    ASSERT_EQ(storage->convexPieces().size(), 1u);
+    const ConvexPolytope& piece = storage->convexPieces().front();
+    EXPECT_NEAR(piece.margin, 0.01, 1e-6);
+    // Shrunk hull + margin reaches the original faces: support along +x is 0.2.
+    double maxX = -1.0;
+    for (const auto& p : piece.points) maxX = std::max(maxX, p.x());
+    EXPECT_NEAR(maxX + piece.margin, 0.2, 1e-4);  // Bullet's shrink is approximate
+    // Bullet's own support mapping (hull + margin) agrees.
+    const auto* convex = static_cast<const btConvexShape*>(storage->shape());
+    EXPECT_NEAR(double(convex->localGetSupportingVertex(btVector3(1, 0, 0)).x()), 0.2, 1e-4);
+}
+
+TEST(CollisionShapes, DecompositionCoversANonConvexMesh) {
+    const TriangleMesh l = test::lShape(0.1, 0.02);
+    const auto storage = buildCollisionShape(l, CollisionShapeKind::ConvexDecomposition);
+    ASSERT_GE(storage->convexPieces().size(), 2u);
+    // The pieces' hulls together have about the L's volume (no piece spans the notch).
+    double volume = 0.0;
+    for (const auto& piece : storage->convexPieces()) {
+        std::vector<Eigen::Vector3d> inflated = piece.points;
+        volume += computeMassProperties(convexHullMesh(inflated, "piece")).volume;
+    }
+    const double exact = computeMassProperties(l).volume;
+    EXPECT_LT(volume, 1.1 * exact);
+    EXPECT_GT(volume, 0.6 * exact);  // shrunk by the margin
+    // Above the triangle limit the decomposition falls back to GImpact (HACD would take seconds).
+    const TriangleMesh ring = test::torus(0.1, 0.03, 32, 12);  // 768 triangles
+    EXPECT_EQ(buildCollisionShape(ring, CollisionShapeKind::ConvexDecomposition)->kind(),
+              CollisionShapeKind::GImpactMesh);
+    const auto gimpact = buildCollisionShape(l, CollisionShapeKind::GImpactMesh);
+    EXPECT_TRUE(gimpact->convexPieces().empty());
+    EXPECT_EQ(gimpact->shape()->getShapeType(), GIMPACT_SHAPE_PROXYTYPE);
+}
+
+TEST(CollisionShapes, NonConvexBodiesRestStablyOnTheGround) {
+    for (const CollisionShapeKind kind :
+         {CollisionShapeKind::ConvexDecomposition, CollisionShapeKind::GImpactMesh}) {
+        btDefaultCollisionConfiguration config;
+        btCollisionDispatcher dispatcher(&config);
+        btDbvtBroadphase broadphase;
+        btSequentialImpulseConstraintSolver solver;
+        btFractureDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
+        world.setGravity(btVector3(0, btScalar(-9.81), 0));
+        btBoxShape groundShape(btVector3(5, btScalar(0.5), 5));
+        btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &groundShape));
+        btTransform t;
+        t.setIdentity();
+        t.setOrigin(btVector3(0, btScalar(-0.5), 0));
+        ground.setWorldTransform(t);
+        world.addRigidBody(&ground);
+        FractureBodySettings settings;
+        settings.fracturable = false;
+        settings.concaveShapeKind = kind;
+        // L lying flat (its z axis turned to world y), dropped from 5 cm.
+        t.setRotation(btQuaternion(btVector3(1, 0, 0), btScalar(-M_PI / 2)));
+        t.setOrigin(btVector3(0, btScalar(0.07), 0));
+        btFractureRigidBody body(Material::glass(), test::lShape(0.1, 0.02), settings, t);
+        world.addRigidBody(&body);
+        for (int i = 0; i < 480; ++i) world.stepSimulation(btScalar(1.0 / 240.0), 1, btScalar(1.0 / 240.0));
+        const double height = double(body.getWorldTransform().getOrigin().y());
+        // Resting on its 4 cm thick side: centre of mass 2 cm (+ margins) above the ground.
+        EXPECT_NEAR(height, 0.02, 0.01) << toString(kind);
+        EXPECT_LT(double(body.getLinearVelocity().length()), 1e-2) << toString(kind);
+        world.removeRigidBody(&body);
+        world.removeRigidBody(&ground);
+    }
+}
+
+TEST(FragmentSeparation, OverlappingBoxesArePushedApartAboutTheirCentreOfMass) {
+    const auto cube = boxMesh(Eigen::Vector3d(0.5, 0.5, 0.5), "cube").vertices;
+    SeparationBody a{{ConvexPolytope{cube, 0.0}}, 1.0, 1.0};
+    SeparationBody b = a;
+    for (auto& p : b.pieces[0].points) p.x() += 0.95;  // 5 cm overlap
+    b.mass = 3.0;
+    const SeparationResult r = separateOverlaps({a, b});
+    ASSERT_EQ(r.pushes.size(), 2u);
+    EXPECT_NEAR((r.pushes[1] - r.pushes[0]).x(), 0.05, 1e-6);
+    // Mass-weighted: the common centre of mass stays.
+    EXPECT_LT((1.0 * r.pushes[0] + 3.0 * r.pushes[1]).norm(), 1e-9);
+    EXPECT_NEAR(r.largestPush, 0.0375, 1e-6);
+    // Touching bodies are left alone.
+    for (auto& p : b.pieces[0].points) p.x() += 0.05;
+    const SeparationResult none = separateOverlaps({a, b});
+    EXPECT_EQ(none.overlapsResolved, 0);
+    EXPECT_EQ(none.largestPush, 0.0);
+}

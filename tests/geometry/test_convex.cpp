@@ -1,0 +1,107 @@
+// Convex hulls (btConvexHullComputer) and libccd penetration between hulls (GJK + EPA).
+#include "TestShapes.h"
+
+#include <btFracture/core/Error.h>
+#include <btFracture/core/MeshCheck.h>
+#include <btFracture/geometry/ConvexHull.h>
+#include <btFracture/geometry/ConvexPenetration.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace btfracture {
+namespace {
+
+std::vector<Eigen::Vector3d> boxCorners(const Eigen::Vector3d& half) {
+    return test::box(-half, half).vertices;
+}
+
+// Every point lies on or inside every face plane of the hull.
+void expectContains(const TriangleMesh& hull, const std::vector<Eigen::Vector3d>& points, double tolerance) {
+    for (const auto& t : hull.triangles) {
+        const Eigen::Vector3d& a = hull.vertices[t[0]];
+        const Eigen::Vector3d n = (hull.vertices[t[1]] - a).cross(hull.vertices[t[2]] - a).normalized();
+        for (const auto& p : points) ASSERT_LE((p - a).dot(n), tolerance);
+    }
+}
+
+TEST(ConvexHull, BoxWithInteriorPointsIsTheBox) {
+    std::vector<Eigen::Vector3d> points = boxCorners({0.1, 0.2, 0.3});
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int i = 0; i < 500; ++i) points.emplace_back(0.1 * u(rng), 0.2 * u(rng), 0.3 * u(rng));
+    const TriangleMesh hull = convexHullMesh(points, "box cloud");
+    EXPECT_EQ(hull.vertices.size(), 8u);
+    const MeshDefects d = inspectMesh(hull);
+    EXPECT_TRUE(d.isClosedManifold()) << d.describe();
+    EXPECT_NEAR(d.signedVolume, 0.2 * 0.4 * 0.6, 1e-12);
+    expectContains(hull, points, 1e-12);
+    for (const auto& v : hull.vertices)
+        EXPECT_EQ(v.cwiseAbs(), Eigen::Vector3d(0.1, 0.2, 0.3));  // input points, exactly
+}
+
+TEST(ConvexHull, SphereHullContainsAllPoints) {
+    const TriangleMesh sphere = test::sphere(0.05, 3);
+    const TriangleMesh hull = convexHullMesh(sphere.vertices, "sphere");
+    EXPECT_TRUE(inspectMesh(hull).isClosedManifold());
+    EXPECT_EQ(hull.vertices.size(), sphere.vertices.size());
+    expectContains(hull, sphere.vertices, 1e-12);
+}
+
+TEST(ConvexHull, DegenerateInputIsRejected) {
+    EXPECT_THROW(convexHullMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, "three points"), Error);
+    EXPECT_THROW(convexHullMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0.5, 0.5, 0}}, "flat"), Error);
+    EXPECT_THROW(convexHullMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, NAN}}, "nan"), Error);
+    EXPECT_TRUE(isConvex(convexHullMesh(test::sphere(1.0, 2).vertices, "sphere")));
+    EXPECT_FALSE(isConvex(test::demoMesh("bunny.obj", 0.15)));
+}
+
+// Places hull points (own frame) in the world.
+ConvexPolytope placed(const std::vector<Eigen::Vector3d>& points, const Eigen::Isometry3d& pose) {
+    ConvexPolytope p;
+    for (const auto& v : points) p.points.push_back(pose * v);
+    return p;
+}
+
+// Acceptance (issue 5): the penetration depth between two overlapping box hulls matches the
+// hand-computed value.
+TEST(ConvexPenetration, OverlappingBoxHullsGiveHandComputedDepth) {
+    const auto unit = convexHullMesh(boxCorners({0.5, 0.5, 0.5}), "unit box").vertices;
+    const ConvexPolytope a = placed(unit, Eigen::Isometry3d::Identity());
+    // B shifted by (0.8, 0.1, 0.05): overlaps are 0.2 in x, 0.9 in y, 0.95 in z -> depth 0.2 along x.
+    Eigen::Isometry3d poseB = Eigen::Isometry3d::Identity();
+    poseB.translation() = Eigen::Vector3d(0.8, 0.1, 0.05);
+    Penetration c = convexPenetration(a, placed(unit, poseB));
+    ASSERT_TRUE(c.overlapping);
+    EXPECT_NEAR(c.depth, 0.2, 1e-6);
+    EXPECT_NEAR(c.direction.x(), 1.0, 1e-6);  // moving B by +x separates
+    EXPECT_GT(c.point.x(), 0.3 - 1e-6);       // contact inside the overlap region
+    EXPECT_LT(c.point.x(), 0.5 + 1e-6);
+
+    // B turned 45 degrees about z at x = 1.1: its edge reaches x = 1.1 - sqrt(2)/2, so the depth
+    // is 0.5 + sqrt(2)/2 - 1.1 = 0.10711 along x (along the diagonal it would be 0.4293).
+    poseB = Eigen::Isometry3d::Identity();
+    poseB.translation() = Eigen::Vector3d(1.1, 0.0, 0.0);
+    poseB.linear() = Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    c = convexPenetration(a, placed(unit, poseB));
+    ASSERT_TRUE(c.overlapping);
+    EXPECT_NEAR(c.depth, 0.5 + std::sqrt(0.5) - 1.1, 1e-6);
+    EXPECT_NEAR(c.direction.x(), 1.0, 1e-6);
+    // Translating B by the result separates the hulls.
+    Eigen::Isometry3d moved = poseB;
+    moved.translation() += (c.depth + 1e-6) * c.direction;
+    EXPECT_FALSE(convexPenetration(a, placed(unit, moved)).overlapping);
+}
+
+TEST(ConvexPenetration, SeparatedHullsDoNotOverlap) {
+    const auto unit = boxCorners({0.5, 0.5, 0.5});
+    Eigen::Isometry3d poseB = Eigen::Isometry3d::Identity();
+    poseB.translation() = Eigen::Vector3d(1.2, 0.0, 0.0);
+    const Penetration c = convexPenetration(placed(unit, Eigen::Isometry3d::Identity()), placed(unit, poseB));
+    EXPECT_FALSE(c.overlapping);
+    EXPECT_EQ(c.depth, 0.0);
+}
+
+}  // namespace
+}  // namespace btfracture

@@ -1,0 +1,262 @@
+// Crack cuts, segmentation into fragments, volume classes (§5.2) and incomplete cracks (§5.3).
+#include "TestShapes.h"
+
+#include <btFracture/core/Error.h>
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/core/MeshCheck.h>
+#include <btFracture/geometry/LevelSetBody.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace btfracture {
+namespace {
+
+// A 10 x 6 x 5 cm box at 64 voxels along its longest side (coarse: these tests only need the
+// cut geometry, and they stay fast).
+const Eigen::Vector3d kBoxSize(0.10, 0.06, 0.05);
+const double kVoxel = 0.10 / 64;
+
+LevelSetBody makeBox() {
+    return LevelSetBody(test::box(Eigen::Vector3d::Zero(), kBoxSize, "box"), kVoxel);
+}
+
+void expectClosedManifold(const TriangleMesh& mesh) {
+    const MeshDefects d = inspectMesh(mesh);
+    EXPECT_TRUE(d.isClosedManifold()) << mesh.name << ": " << d.describe();
+    EXPECT_GT(d.signedVolume, 0.0) << mesh.name;
+}
+
+TEST(Fragments, UncutBodyIsOneFragmentKeepingItsSolver) {
+    const LevelSetBody box = makeBox();
+    const auto pieces = box.fragments(FragmentSettings());
+    ASSERT_EQ(pieces.size(), 1u);
+    EXPECT_NEAR(pieces[0].mass.volume / box.massProperties().volume, 1.0, 1e-6);
+    EXPECT_EQ(pieces[0].volumeClass, FragmentClass::KeepsParentSolver);
+    EXPECT_TRUE(pieces[0].incompleteCracks.empty());
+    ASSERT_TRUE(pieces[0].levelSet);
+}
+
+// Acceptance (issue 5): a planar cut through a box gives exactly 2 fragments whose volumes add up
+// to the original within the voxel tolerance and match the analytic split within 1 %.
+TEST(Fragments, ObliquePlanarCutSplitsBoxIntoTwoAnalyticPieces) {
+    LevelSetBody box = makeBox();
+    const double volume = kBoxSize.prod();
+    EXPECT_NEAR(box.massProperties().volume / volume, 1.0, 0.002);
+    // Plane through c with normal n crosses only the four x-parallel edges, so the piece below
+    // x_cut(y, z) has volume A_yz * x_cut(centre of the yz face).
+    const Eigen::Vector3d c(0.0312, 0.03, 0.025), n = Eigen::Vector3d(1.0, 0.25, -0.15).normalized();
+    const Eigen::Vector3d u = n.cross(Eigen::Vector3d::UnitZ()).normalized(), v = n.cross(u);
+    box.cutAlongSurface(test::sheet(c, 0.1 * u, 0.1 * v, "oblique cut"), 7);
+    const double left = kBoxSize.y() * kBoxSize.z() * c.x();  // plane passes through the face centre line
+    const double right = volume - left;
+
+    EXPECT_EQ(box.crackIds(), std::vector<int>{7});
+    EXPECT_EQ(box.crackAt(c), 7);
+    EXPECT_TRUE(box.isInsideCrack(c));
+    EXPECT_FALSE(box.isInsideObject(c));
+    EXPECT_TRUE(box.isInsideObject(c - 3 * kVoxel * n));
+    EXPECT_EQ(box.crackAt(c - 3 * kVoxel * n), -1);
+
+    const auto pieces = box.fragments(FragmentSettings());
+    ASSERT_EQ(pieces.size(), 2u);
+    const double sum = pieces[0].mass.volume + pieces[1].mass.volume;
+    std::printf(
+        "oblique cut: pieces %.6g + %.6g = %.6g m^3 (uncut level set %.6g, box %.6g); analytic %.6g / %.6g\n",
+        pieces[0].mass.volume, pieces[1].mass.volume, sum, box.massProperties().volume, volume, right, left);
+    std::printf("  errors: sum %.4f %%, larger %.4f %%, smaller %.4f %%\n",
+                100 * (sum / box.massProperties().volume - 1), 100 * (pieces[0].mass.volume / right - 1),
+                100 * (pieces[1].mass.volume / left - 1));
+    // Voxel tolerance of the sum: half a voxel layer over the cut. The slab is split between
+    // the sides, so only the voxel error along the crack's rim remains.
+    const double cutArea = kBoxSize.y() * kBoxSize.z() / std::abs(n.x());
+    std::printf("  sum - uncut = %.3f voxel layers over the cut\n",
+                (sum - box.massProperties().volume) / (kVoxel * cutArea));
+    EXPECT_LT(std::abs(sum - box.massProperties().volume), 0.5 * kVoxel * cutArea);
+    EXPECT_LT(std::abs(sum - volume), 0.5 * kVoxel * cutArea);
+    EXPECT_NEAR(pieces[0].mass.volume / right, 1.0, 0.01);
+    EXPECT_NEAR(pieces[1].mass.volume / left, 1.0, 0.01);
+
+    for (const Fragment& f : pieces) {
+        EXPECT_TRUE(f.incompleteCracks.empty()) << f.name;
+        EXPECT_EQ(f.volumeClass, FragmentClass::Breakable) << f.name;
+        expectClosedManifold(f.collisionMesh);
+        expectClosedManifold(f.visualMesh);
+        expectClosedManifold(f.surfaceMesh);
+        expectClosedManifold(f.convexHull);
+        EXPECT_LE(static_cast<int>(f.collisionMesh.triangles.size()), FragmentSettings().collisionTriangles);
+        ASSERT_TRUE(f.levelSet);
+        EXPECT_TRUE(f.levelSet->crackIds().empty());
+        EXPECT_NEAR(f.levelSet->massProperties().volume, f.mass.volume, 1e-12);
+        EXPECT_DOUBLE_EQ(f.levelSet->originalVolume(), box.originalVolume());
+        // The surface mesh encloses the fragment's level-set volume (its edges are chamfered by
+        // about a voxel at this coarse resolution).
+        EXPECT_NEAR(inspectMesh(f.surfaceMesh).signedVolume / f.mass.volume, 1.0, 0.03) << f.name;
+    }
+    // Centres of mass on the correct sides of the plane, and the pieces balance about the box centre.
+    EXPECT_GT((pieces[0].mass.centreOfMass - c).dot(n), 0.0);
+    EXPECT_LT((pieces[1].mass.centreOfMass - c).dot(n), 0.0);
+    const Eigen::Vector3d combined = (pieces[0].mass.volume * pieces[0].mass.centreOfMass +
+                                      pieces[1].mass.volume * pieces[1].mass.centreOfMass) /
+                                     sum;
+    EXPECT_LT((combined - 0.5 * kBoxSize).norm(), 0.5 * kVoxel);
+}
+
+TEST(Fragments, AxisAlignedCutMatchesAnalyticSplitAndCentres) {
+    LevelSetBody box = makeBox();
+    const double x = 0.0407;
+    box.cutAlongSurface(test::sheet({x, 0.03, 0.025}, {0, 0.05, 0}, {0, 0, 0.05}), 0);
+    const auto pieces = box.fragments(FragmentSettings());
+    ASSERT_EQ(pieces.size(), 2u);
+    const double area = kBoxSize.y() * kBoxSize.z();
+    EXPECT_NEAR(pieces[0].mass.volume / (area * (kBoxSize.x() - x)), 1.0, 0.01);
+    EXPECT_NEAR(pieces[1].mass.volume / (area * x), 1.0, 0.01);
+    EXPECT_NEAR(pieces[0].mass.centreOfMass.x(), 0.5 * (x + kBoxSize.x()), 0.5 * kVoxel);
+    EXPECT_NEAR(pieces[1].mass.centreOfMass.x(), 0.5 * x, 0.5 * kVoxel);
+}
+
+// Acceptance (issue 5): a cut stopped halfway leaves one fragment, which carries the incomplete
+// crack (§5.3); finishing the crack in that fragment's own body splits it.
+TEST(Fragments, CutStoppedHalfwayLeavesOneFragmentWithAnIncompleteCrack) {
+    LevelSetBody box = makeBox();
+    const double x = 0.05;
+    // Sheet covers y in [-0.01, 0.03]: half of the 6 cm section.
+    box.cutAlongSurface(test::sheet({x, 0.01, 0.025}, {0, 0.02, 0}, {0, 0, 0.04}, "half crack"), 3);
+    const auto pieces = box.fragments(FragmentSettings());
+    ASSERT_EQ(pieces.size(), 1u);
+    const Fragment& f = pieces[0];
+    EXPECT_EQ(f.incompleteCracks, std::vector<int>{3});
+    EXPECT_NEAR(f.mass.volume / box.massProperties().volume, 1.0, 1e-3);
+    EXPECT_EQ(f.volumeClass, FragmentClass::KeepsParentSolver);
+    expectClosedManifold(f.surfaceMesh);
+    expectClosedManifold(f.collisionMesh);
+    // The BEM surface excludes the incomplete crack; the visual mesh shows it as a slit.
+    EXPECT_NEAR(inspectMesh(f.surfaceMesh).signedVolume / f.mass.volume, 1.0, 0.02);
+    EXPECT_LT(inspectMesh(f.visualMesh).signedVolume, inspectMesh(f.surfaceMesh).signedVolume);
+
+    ASSERT_TRUE(f.levelSet);
+    LevelSetBody& child = *f.levelSet;
+    EXPECT_EQ(child.crackIds(), std::vector<int>{3});
+    EXPECT_EQ(child.crackAt({x, 0.01, 0.025}), 3);
+    EXPECT_FALSE(child.isInsideObject({x, 0.01, 0.025}));
+    EXPECT_TRUE(child.isInsideObject({x, 0.05, 0.025}));
+    // The crack grows through the rest of the section later (§5.3: old cracks keep growing).
+    child.cutAlongSurface(test::sheet({x, 0.05, 0.025}, {0, 0.025, 0}, {0, 0, 0.04}, "rest of crack"), 3);
+    const auto halves = child.fragments(FragmentSettings());
+    ASSERT_EQ(halves.size(), 2u);
+    for (const Fragment& h : halves) {
+        EXPECT_TRUE(h.incompleteCracks.empty());
+        EXPECT_NEAR(h.mass.volume / (0.5 * box.massProperties().volume), 1.0, 0.01);
+        EXPECT_EQ(h.volumeClass, FragmentClass::Breakable);
+    }
+}
+
+// Three corner cuts and a plane give pieces in every class of §5.2.
+TEST(Fragments, VolumeClassesOnConstructedCase) {
+    const double side = 0.1;
+    LevelSetBody cube(test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(side), "cube"), side / 64);
+    // Corner cube of edge a at the origin corner: three squares that meet along its edges.
+    auto cutCorner = [&](LevelSetBody& body, double a, const Eigen::Vector3d& corner, int id) {
+        const double margin = 0.02;
+        for (int axis = 0; axis < 3; ++axis) {
+            const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+            Eigen::Vector3d centre = corner, u = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
+            const double sign = corner[axis] == 0.0 ? 1.0 : -1.0;
+            centre[axis] = corner[axis] + sign * a;
+            centre[i] = corner[i] + (corner[i] == 0.0 ? 1.0 : -1.0) * 0.5 * (a - margin);
+            centre[j] = corner[j] + (corner[j] == 0.0 ? 1.0 : -1.0) * 0.5 * (a - margin);
+            u[i] = 0.5 * (a + margin);
+            v[j] = 0.5 * (a + margin);
+            body.cutAlongSurface(test::sheet(centre, u, v, "corner face"), id);
+        }
+    };
+    const double a = 0.15 * side, b = 0.25 * side, x = 0.7 * side;
+    cutCorner(cube, a, Eigen::Vector3d::Zero(), 1);
+    cutCorner(cube, b, Eigen::Vector3d::Constant(side), 2);
+    cube.cutAlongSurface(test::sheet({x, 0.5 * side, 0.5 * side}, {0, 0.6 * side, 0}, {0, 0, 0.6 * side}), 3);
+    const auto pieces = cube.fragments(FragmentSettings());
+    ASSERT_EQ(pieces.size(), 4u);
+    const double v = side * side * side;
+    const double expected[4] = {x * side * side - a * a * a, (side - x) * side * side - b * b * b, b * b * b,
+                                a * a * a};
+    const FragmentClass classes[4] = {FragmentClass::Breakable, FragmentClass::Breakable,
+                                      FragmentClass::Unbreakable, FragmentClass::ConvexHull};
+    double sum = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        std::printf("piece %d: %.5f %% of original (analytic %.5f %%), %s\n", k,
+                    100 * pieces[k].fractionOfOriginal, 100 * expected[k] / v,
+                    fragmentClassName(pieces[k].volumeClass));
+        EXPECT_EQ(pieces[k].volumeClass, classes[k]) << k;
+        // Small pieces are 10-16 voxels wide here: their edges cost a few percent.
+        EXPECT_NEAR(pieces[k].mass.volume / expected[k], 1.0, k < 2 ? 0.01 : 0.08) << k;
+        EXPECT_EQ(static_cast<bool>(pieces[k].levelSet), k < 2) << k;
+        EXPECT_EQ(pieces[k].surfaceMesh.triangles.empty(), k >= 2) << k;
+        expectClosedManifold(pieces[k].collisionMesh);
+        expectClosedManifold(pieces[k].convexHull);
+        sum += pieces[k].mass.volume;
+    }
+    const double crackArea = 3 * a * a + 3 * b * b + side * side;
+    EXPECT_LT(std::abs(sum - cube.massProperties().volume), 0.5 * (side / 64) * crackArea);
+
+    // Cutting only the small corner leaves the rest with > 95 % of its parent: it keeps the solver.
+    LevelSetBody cube2(test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(side), "cube"),
+                       side / 64);
+    cutCorner(cube2, a, Eigen::Vector3d::Zero(), 1);
+    const auto two = cube2.fragments(FragmentSettings());
+    ASSERT_EQ(two.size(), 2u);
+    EXPECT_EQ(two[0].volumeClass, FragmentClass::KeepsParentSolver);
+    EXPECT_EQ(two[1].volumeClass, FragmentClass::ConvexHull);
+}
+
+TEST(Fragments, ClassifyFragmentThresholdsAreSettings) {
+    FragmentSettings s;
+    EXPECT_EQ(classifyFragment(0.005, 1.0, 1.0, s), FragmentClass::ConvexHull);
+    EXPECT_EQ(classifyFragment(0.0051, 1.0, 1.0, s), FragmentClass::Unbreakable);
+    EXPECT_EQ(classifyFragment(0.02, 1.0, 1.0, s), FragmentClass::Unbreakable);
+    EXPECT_EQ(classifyFragment(0.03, 1.0, 1.0, s), FragmentClass::Breakable);
+    EXPECT_EQ(classifyFragment(0.9, 0.95, 1.0, s), FragmentClass::Breakable);
+    EXPECT_EQ(classifyFragment(0.91, 0.95, 1.0, s), FragmentClass::KeepsParentSolver);
+    // (d) needs a breakable-sized fragment: a small parent's near-whole piece stays small.
+    EXPECT_EQ(classifyFragment(0.0149, 0.015, 1.0, s), FragmentClass::Unbreakable);
+    s.convexHullMaxFraction = 0.01;
+    EXPECT_EQ(classifyFragment(0.008, 1.0, 1.0, s), FragmentClass::ConvexHull);
+    s.unbreakableMaxFraction = 0.005;
+    EXPECT_THROW(s.validate(), Error);
+    EXPECT_THROW(classifyFragment(0.0, 1.0, 1.0, FragmentSettings()), Error);
+    FragmentSettings bad;
+    bad.collisionTriangles = 2;
+    EXPECT_THROW(makeBox().fragments(bad), Error);
+}
+
+TEST(Fragments, SegmentationIsDeterministic) {
+    LevelSetBody box = makeBox();
+    box.cutAlongSurface(test::sheet({0.06, 0.03, 0.025}, {0.01, 0.05, 0}, {0, 0.01, 0.05}), 0);
+    const auto first = box.fragments(FragmentSettings());
+    const auto second = box.fragments(FragmentSettings());
+    ASSERT_EQ(first.size(), second.size());
+    for (size_t k = 0; k < first.size(); ++k) {
+        EXPECT_EQ(first[k].mass.volume, second[k].mass.volume);
+        EXPECT_EQ(first[k].mass.centreOfMass, second[k].mass.centreOfMass);
+        EXPECT_EQ(first[k].collisionMesh.vertices, second[k].collisionMesh.vertices);
+    }
+}
+
+TEST(Fragments, BadCrackSheetsAreRejectedAndMissesChangeNothing) {
+    LevelSetBody box = makeBox();
+    TriangleMesh sheet = test::sheet({0.05, 0.03, 0.025}, {0, 0.05, 0}, {0, 0, 0.05});
+    EXPECT_THROW(box.cutAlongSurface(sheet, -1), Error);
+    EXPECT_THROW(box.cutAlongSurface(TriangleMesh{}, 0), Error);
+    TriangleMesh badIndex = sheet;
+    badIndex.triangles[0][2] = 9;
+    EXPECT_THROW(box.cutAlongSurface(badIndex, 0), Error);
+    TriangleMesh nan = sheet;
+    nan.vertices[1].x() = NAN;
+    EXPECT_THROW(box.cutAlongSurface(nan, 0), Error);
+    box.cutAlongSurface(test::sheet({0.5, 0.5, 0.5}, {0, 0.05, 0}, {0, 0, 0.05}), 0);  // far away
+    EXPECT_TRUE(box.crackIds().empty());
+    EXPECT_EQ(box.fragments(FragmentSettings()).size(), 1u);
+}
+
+}  // namespace
+}  // namespace btfracture
