@@ -2,13 +2,13 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/io/ReadFile.h>
 
 #include <BulletCollision/CollisionShapes/btScaledBvhTriangleMeshShape.h>
 #include <BulletCollision/Gimpact/btGImpactShape.h>
 #include <BulletFileLoader/btBulletFile.h>
 #include <BulletWorldImporter/btBulletWorldImporter.h>
-#include <LinearMath/btConvexHullComputer.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <fcntl.h>
@@ -164,8 +164,8 @@ FractureRbObject parseRow(const CsvRow& row) {
         b.maxCracks = static_cast<int>(row.integer(21, -1, 1000000L, "an integer >= -1 (-1: no limit)"));
     if (n >= 22)
         b.method = row.integer(22, 0, 1, "0 (full BEM) or 1 (estimated SIFs)") == 0
-                       ? SceneFractureMethod::Full
-                       : SceneFractureMethod::Estimated;
+                       ? FractureMethod::Full
+                       : FractureMethod::Estimated;
     if (n >= 23) b.samplingDensity = row.positive(23, "samples per crack-front edge");
     o.breakable = b;
     return o;
@@ -391,36 +391,6 @@ std::vector<FileObject> fileObjects(Importer& importer, bParse::btBulletFile& fi
     return objects;
 }
 
-// Outward orientation of a closed mesh: flips the triangles when the signed volume is negative.
-void orientOutward(TriangleMesh& mesh) {
-    double volume = 0.0;
-    for (const auto& t : mesh.triangles)
-        volume += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]]));
-    if (volume < 0.0)
-        for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
-}
-
-TriangleMesh convexHullMesh(const std::vector<Eigen::Vector3d>& points, const std::string& context) {
-    std::vector<double> coordinates;
-    for (const auto& p : points) coordinates.insert(coordinates.end(), {p.x(), p.y(), p.z()});
-    btConvexHullComputer hull;
-    hull.compute(coordinates.data(), 3 * sizeof(double), static_cast<int>(points.size()), 0, 0);
-    if (hull.vertices.size() < 4 || hull.faces.size() < 4)
-        throw Error(context + ": the convex hull of its " + std::to_string(points.size()) +
-                    " points is flat or empty");
-    TriangleMesh mesh;
-    for (int i = 0; i < hull.vertices.size(); ++i) mesh.vertices.push_back(toEigen(hull.vertices[i]));
-    for (int f = 0; f < hull.faces.size(); ++f) {
-        const btConvexHullComputer::Edge* first = &hull.edges[hull.faces[f]];
-        const int a = first->getSourceVertex();
-        for (const btConvexHullComputer::Edge* e = first->getNextEdgeOfFace(); e->getTargetVertex() != a;
-             e = e->getNextEdgeOfFace())
-            mesh.triangles.push_back({a, e->getSourceVertex(), e->getTargetVertex()});
-    }
-    orientOutward(mesh);
-    return mesh;
-}
-
 // The triangles of a striding mesh interface, scaled by `scaling`, with exactly coincident
 // vertices merged (exporters often split vertices along seams).
 TriangleMesh stridingMesh(const btStridingMeshInterface& data, const btVector3& scaling,
@@ -606,8 +576,6 @@ Scene readFractureRbScene(const std::string& bulletFile, const std::string& csvF
         if (body.friction != object.friction || body.restitution != object.restitution)
             logf(LogLevel::Info, context, ": friction ", object.friction, " and restitution ",
                  object.restitution, " clamped to >= 0 and [0, 1]");
-        if (body.shape.type == SceneShapeType::Mesh)
-            body.resolution.collisionTriangles = static_cast<int>(body.shape.meshData->triangles.size());
         bodyByKey[body.name] = scene.bodies.size();
         scene.bodies.push_back(std::move(body));
     }
@@ -662,17 +630,17 @@ Scene readFractureRbScene(const std::string& bulletFile, const std::string& csvF
         body.material = b.material;
         body.mass.reset();  // FractureRB recomputes the mass from volume and density
         body.density = b.material.density();
-        body.fracture.enabled = true;
+        body.fracture.fracturable = true;
         body.fracture.method = b.method;
-        body.resolution.voxelSize = b.voxelSize;
+        body.fracture.voxelSize = b.voxelSize;
         const int own = body.shape.type == SceneShapeType::Mesh
                             ? static_cast<int>(body.shape.meshData->triangles.size())
                         : body.shape.type == SceneShapeType::Box ? 12
-                                                                 : body.resolution.bemTriangles;
-        body.resolution.bemTriangles = b.remeshTarget > 3 ? b.remeshTarget : own;
-        body.resolution.collisionTriangles =
-            std::max(body.resolution.collisionTriangles, body.resolution.bemTriangles);
-        logf(LogLevel::Info, where, ": '", body.name, "' breaks: ", body.resolution.bemTriangles,
+                                                                 : body.fracture.bemTriangleTarget;
+        body.fracture.bemTriangleTarget = b.remeshTarget > 3 ? b.remeshTarget : own;
+        // FractureRB collides with the body's own mesh, so that is the collision resolution.
+        body.fracture.collisionTriangleTarget = std::max(own, body.fracture.bemTriangleTarget);
+        logf(LogLevel::Info, where, ": '", body.name, "' breaks: ", body.fracture.bemTriangleTarget,
              " BEM triangles, voxel ", b.voxelSize, " m; crack mesh size ", b.crackMeshSize,
              " m not used (btFracture's crack elements follow the BEM mesh)");
         if (b.materialModel != "default")

@@ -42,7 +42,7 @@ struct FractureRbObject {
         bool ignoreCrackSelfIntersection = false;
         std::string materialModel = "default";
         int maxCracks = -1;
-        SceneFractureMethod method = SceneFractureMethod::Full;
+        FractureMethod method = FractureMethod::Full;
         double samplingDensity = 1.0;
     };
     std::optional<Breakable> breakable;  // columns 10-23

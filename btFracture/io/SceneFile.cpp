@@ -32,22 +32,21 @@ const char* toString(SceneMeshCollision collision) {
     return collision == SceneMeshCollision::GImpact ? "gimpact" : "convex_hull";
 }
 
-const char* toString(SceneFractureMethod method) {
+const char* methodWord(FractureMethod method) {
     switch (method) {
-        case SceneFractureMethod::Full:
+        case FractureMethod::Full:
             return "full";
-        case SceneFractureMethod::Estimated:
+        case FractureMethod::Estimated:
             return "est";
-        case SceneFractureMethod::Hybrid:
+        case FractureMethod::Hybrid:
             return "hybrid";
     }
     return "?";
 }
 
-SceneFractureMethod parseFractureMethod(const std::string& word, const std::string& what) {
-    for (SceneFractureMethod m :
-         {SceneFractureMethod::Full, SceneFractureMethod::Estimated, SceneFractureMethod::Hybrid})
-        if (word == toString(m)) return m;
+FractureMethod parseFractureMethod(const std::string& word, const std::string& what) {
+    for (FractureMethod m : {FractureMethod::Full, FractureMethod::Estimated, FractureMethod::Hybrid})
+        if (word == methodWord(m)) return m;
     throw Error(what + ": expected \"full\", \"est\" or \"hybrid\", got \"" + word + "\"");
 }
 
@@ -63,9 +62,9 @@ const char* toString(SceneMotion motion) {
     return "?";
 }
 
-void overrideFractureMethod(Scene& scene, SceneFractureMethod method) {
+void overrideFractureMethod(Scene& scene, FractureMethod method) {
     for (SceneBody& body : scene.bodies)
-        if (body.fracture.enabled) body.fracture.method = method;
+        if (body.fracture.fracturable) body.fracture.method = method;
 }
 
 namespace {
@@ -281,8 +280,9 @@ private:
                     for (const SceneBody& b : scene.bodies) names += (names.empty() ? "" : ", ") + b.name;
                     fail(bpath, "no body named '" + item.key() + "' (bodies: " + names + ")");
                 }
-                body->fracture = bodyFracture(item.value(), bpath);
-                if (body->fracture.enabled && (body->isStatic() || body->motion == SceneMotion::Kinematic))
+                bodyFracture(item.value(), bpath, *body);
+                if (body->fracture.fracturable &&
+                    (body->isStatic() || body->motion == SceneMotion::Kinematic))
                     fail(bpath, "body '" + body->name + "' is " +
                                     (body->isStatic() ? "static" : "kinematic") +
                                     " and cannot break (only dynamic bodies break)");
@@ -290,11 +290,12 @@ private:
         }
     }
 
-    SceneFracture bodyFracture(const Json& value, const std::string& path) const {
-        SceneFracture f;
+    // effects.fracture.<name>: fills body.fracture (keeping the resolutions) and body.materialNoise.
+    void bodyFracture(const Json& value, const std::string& path, SceneBody& body) const {
+        FractureBodySettings& f = body.fracture;
         if (value.is_boolean()) {
-            f.enabled = value.get<bool>();
-            return f;
+            f.fracturable = value.get<bool>();
+            return;
         }
         requireObject(
             value, path,
@@ -302,19 +303,19 @@ private:
             "material_noise}");
         allowOnly(value, path,
                   {"method", "hybrid_threshold", "refracture_depth", "impulse_threshold", "material_noise"});
-        f.enabled = true;
+        f.fracturable = true;
         if (value.contains("method"))
             f.method = parseFractureMethod(text(value["method"], child(path, "method")),
                                            source_ + ": " + child(path, "method"));
         if (value.contains("hybrid_threshold")) {
-            if (f.method != SceneFractureMethod::Hybrid)
+            if (f.method != FractureMethod::Hybrid)
                 fail(child(path, "hybrid_threshold"),
-                     std::string("applies to method \"hybrid\" only (method is \"") + toString(f.method) +
+                     std::string("applies to method \"hybrid\" only (method is \"") + methodWord(f.method) +
                          "\")");
-            f.hybridThreshold = integer(value["hybrid_threshold"], child(path, "hybrid_threshold"), 1);
+            f.hybridElementThreshold = integer(value["hybrid_threshold"], child(path, "hybrid_threshold"), 1);
         }
         if (value.contains("refracture_depth"))
-            f.refractureDepth = integer(value["refracture_depth"], child(path, "refracture_depth"), 0, 20);
+            f.maxRefractureDepth = integer(value["refracture_depth"], child(path, "refracture_depth"), 0, 20);
         if (value.contains("impulse_threshold"))
             f.impulseThreshold =
                 positive(value["impulse_threshold"], child(path, "impulse_threshold"), "N s");
@@ -325,31 +326,30 @@ private:
             allowOnly(noise, npath, {"amplitude", "seed"});
             if (!noise.contains("amplitude"))
                 fail(child(npath, "amplitude"), "missing; expected a number in [0, 1)");
-            f.noise.amplitude = number(noise["amplitude"], child(npath, "amplitude"), "a number in [0, 1)");
-            if (!(f.noise.amplitude >= 0.0 && f.noise.amplitude < 1.0))
+            SceneMaterialNoise& n = body.materialNoise;
+            n.amplitude = number(noise["amplitude"], child(npath, "amplitude"), "a number in [0, 1)");
+            if (!(n.amplitude >= 0.0 && n.amplitude < 1.0))
                 fail(child(npath, "amplitude"),
                      "expected a number in [0, 1), got " + shown(noise["amplitude"]));
-            if (noise.contains("seed")) f.noise.seed = seed(noise["seed"], child(npath, "seed"));
+            if (noise.contains("seed")) n.seed = seed(noise["seed"], child(npath, "seed"));
         }
-        return f;
     }
 
-    SceneResolution resolution(const Json& value, const std::string& path) const {
+    // A body's "resolution": the three resolution fields of its fracture settings.
+    void resolution(const Json& value, const std::string& path, FractureBodySettings& r) const {
         requireObject(value, path, "an object {bem_triangles, collision_triangles, voxel_size}");
         allowOnly(value, path, {"bem_triangles", "collision_triangles", "voxel_size"});
-        SceneResolution r;
         if (value.contains("bem_triangles"))
-            r.bemTriangles = integer(value["bem_triangles"], child(path, "bem_triangles"), 4);
+            r.bemTriangleTarget = integer(value["bem_triangles"], child(path, "bem_triangles"), 4);
         if (value.contains("collision_triangles"))
-            r.collisionTriangles =
+            r.collisionTriangleTarget =
                 integer(value["collision_triangles"], child(path, "collision_triangles"), 4);
         if (value.contains("voxel_size"))
             r.voxelSize = positive(value["voxel_size"], child(path, "voxel_size"), "m");
-        if (r.collisionTriangles < r.bemTriangles)
-            fail(path, "collision_triangles (" + std::to_string(r.collisionTriangles) +
-                           ") must be >= bem_triangles (" + std::to_string(r.bemTriangles) +
+        if (r.collisionTriangleTarget < r.bemTriangleTarget)
+            fail(path, "collision_triangles (" + std::to_string(r.collisionTriangleTarget) +
+                           ") must be >= bem_triangles (" + std::to_string(r.bemTriangleTarget) +
                            "): the BEM mesh is the coarsest resolution");
-        return r;
     }
 
     SceneShape shape(const Json& value, const std::string& path) const {
@@ -542,7 +542,7 @@ private:
                      "expected a number in [0, 1], got " + shown(value["restitution"]));
         }
         if (value.contains("resolution"))
-            b.resolution = resolution(value["resolution"], child(path, "resolution"));
+            resolution(value["resolution"], child(path, "resolution"), b.fracture);
         if (value.contains("state")) {
             b.motion = static_cast<SceneMotion>(
                 choice(value["state"], child(path, "state"), {"dynamic", "sleeping", "kinematic"}));

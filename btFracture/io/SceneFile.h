@@ -6,6 +6,7 @@
 // Unknown keys are errors too, so that a typo never silently falls back to a default.
 #include <btFracture/core/Material.h>
 #include <btFracture/core/TriangleMesh.h>
+#include <btFracture/dynamics/FractureBodySettings.h>
 #include <btFracture/io/RenderSettings.h>
 
 #include <Eigen/Core>
@@ -44,15 +45,10 @@ struct SceneShape {
     double offset = 0.0;  // Plane: points x with normal . x = offset [m]
 };
 
-// How the fracture solver computes stress intensity factors (paper §3, §4, Fig. 7).
-enum class SceneFractureMethod {
-    Full,       // "full": crack unknowns in the BEM system (Eq. 4)
-    Estimated,  // "est": one crack-free solve, SIFs estimated from interior stress (§4.2, §4.3)
-    Hybrid,     // "hybrid": full until the BEM mesh passes hybridThreshold elements, then est
-};
-const char* toString(SceneFractureMethod method);
-// "full", "est" or "hybrid"; throws btfracture::Error naming `what` and the accepted words.
-SceneFractureMethod parseFractureMethod(const std::string& word, const std::string& what);
+// Scene spelling of the fracture method: "full", "est" or "hybrid" (paper §3, §4, Fig. 7).
+const char* methodWord(FractureMethod method);
+// Parses that spelling; throws btfracture::Error naming `what` and the accepted words.
+FractureMethod parseFractureMethod(const std::string& word, const std::string& what);
 
 // Random spatial variation of strength and toughness: value(x) = value * (1 + amplitude * n(x))
 // with smooth noise n in [-1, 1]; seed picks the realisation (combined with SceneEffects::seed).
@@ -61,23 +57,13 @@ struct SceneMaterialNoise {
     std::uint64_t seed = 0;
 };
 
-// Per-body fracture effects (scene key effects.fracture.<body>).
-struct SceneFracture {
-    bool enabled = false;
-    SceneFractureMethod method = SceneFractureMethod::Hybrid;
-    int hybridThreshold = 2000;     // hybrid: full -> est once the BEM mesh has more elements
-    int refractureDepth = 3;        // fragment generations that may break again (0: the original only)
-    double impulseThreshold = 1.0;  // cheap trigger: summed normal impulse in one step [N s]
-    SceneMaterialNoise noise;
-};
-
-// The three resolutions of a breakable body, coarsest first (DESIGN.md): BEM mesh <= collision
-// mesh <= level set.
-struct SceneResolution {
-    int bemTriangles = 1000;        // BEM surface mesh [triangles]
-    int collisionTriangles = 5000;  // collision and output mesh [triangles], >= bemTriangles
-    double voxelSize = 0.0;         // level-set voxel size [m]; 0 = chosen by the fracture engine
-};
+// A body's fracture settings as the scene gives them: dynamics' FractureBodySettings (what a
+// btFractureRigidBody takes), except that nothing breaks unless the effects section says so.
+inline FractureBodySettings unbreakable() {
+    FractureBodySettings s;
+    s.fracturable = false;
+    return s;
+}
 
 // How a body moves: dynamic; dynamic but asleep until something touches it; kinematic (moves at
 // its constant linear and angular velocity, pushes others, feels nothing).
@@ -100,8 +86,11 @@ struct SceneBody {
     SceneMotion motion = SceneMotion::Dynamic;
     double friction = 0.5;     // Bullet's friction coefficient [-]
     double restitution = 0.0;  // Bullet's restitution [-]
-    SceneResolution resolution;
-    SceneFracture fracture;  // from the scene's effects section
+    // From effects.fracture.<name> (fracturable, method, hybridElementThreshold,
+    // impulseThreshold, maxRefractureDepth) and the body's "resolution" (bemTriangleTarget,
+    // collisionTriangleTarget, voxelSize).
+    FractureBodySettings fracture = unbreakable();
+    SceneMaterialNoise materialNoise;  // effects.fracture.<name>.material_noise
 
     // Never moves: a plane or mass 0 (kinematic bodies move, so they are not static).
     bool isStatic() const {
@@ -149,7 +138,7 @@ struct Scene {
 };
 
 // Sets the method of every breakable body (the runner's --method).
-void overrideFractureMethod(Scene& scene, SceneFractureMethod method);
+void overrideFractureMethod(Scene& scene, FractureMethod method);
 
 // Reads and validates a scene file; mesh paths are resolved against its folder and must exist.
 Scene readSceneFile(const std::string& path);

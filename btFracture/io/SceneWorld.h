@@ -50,8 +50,8 @@ public:
     // One body. `info` carries the shape, mass, principal inertia and start transform (centre of
     // mass frame); `surface` is the body's closed surface mesh in that frame (a display square for
     // planes); `description` has the material, resolutions and fracture settings
-    // (description.fracture.enabled says whether it may break). SceneWorld sets the velocities,
-    // friction, restitution and motion state and adds the body to the world afterwards.
+    // (description.fracture: dynamics' FractureBodySettings, fracturable or not). SceneWorld sets the
+    // velocities, friction, restitution and motion state and adds the body to the world afterwards.
     virtual std::unique_ptr<btRigidBody> createBody(const btRigidBody::btRigidBodyConstructionInfo& info,
                                                     const SceneBody& description,
                                                     const TriangleMesh& surface) const;

@@ -21,7 +21,7 @@ struct FractureEventRecord {
     // contacts [s].
     double contactDuration = 0.0;
     // The method that ran (a hybrid body reports the one it used at this event: full or est).
-    SceneFractureMethod method = SceneFractureMethod::Full;
+    FractureMethod method = FractureMethod::Full;
     int bemTriangles = 0;                // BEM surface mesh of the body
     int crackTriangles = 0;              // crack-sheet triangles at the end of the event
     std::vector<std::string> fragments;  // names of the bodies that replaced it

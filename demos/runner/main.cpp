@@ -87,7 +87,7 @@ struct Options {
     std::optional<std::pair<std::string, std::string>> fractureRb;  // .bullet, .csv
     std::optional<std::string> out;
     std::optional<int> steps;
-    std::optional<SceneFractureMethod> method;
+    std::optional<FractureMethod> method;
     std::optional<std::uint64_t> seed;
     std::optional<int> threads;
     std::optional<SceneOutputFormats> outputs;
@@ -349,7 +349,7 @@ int run(const Options& options) {
     FractureRecorder recorder(formats.csv ? (dir / "statistics.csv").string() : std::string());
     int breakable = 0;
     for (size_t i = 0; i < scene.bodies.size(); ++i)
-        if (scene.bodies[i].fracture.enabled) {
+        if (scene.bodies[i].fracture.fracturable) {
             recorder.addOriginal(scene.bodies[i].name, world->bodies()[i].volume);
             ++breakable;
         }

@@ -81,10 +81,10 @@ TEST(FractureRb, ExampleMatchesItsGenerator) {
     EXPECT_DOUBLE_EQ(brick.material.tensileStrength(), 3e6);
     EXPECT_DOUBLE_EQ(brick.material.fractureToughness(), 1e6);
     EXPECT_DOUBLE_EQ(brick.material.compressiveFactor(), 10.0);
-    EXPECT_TRUE(brick.fracture.enabled);
-    EXPECT_EQ(brick.fracture.method, SceneFractureMethod::Full);
-    EXPECT_EQ(brick.resolution.bemTriangles, 56);  // no remesh: the mesh itself, as FractureRB
-    EXPECT_DOUBLE_EQ(brick.resolution.voxelSize, 0.002);
+    EXPECT_TRUE(brick.fracture.fracturable);
+    EXPECT_EQ(brick.fracture.method, FractureMethod::Full);
+    EXPECT_EQ(brick.fracture.bemTriangleTarget, 56);  // no remesh: the mesh itself, as FractureRB
+    EXPECT_DOUBLE_EQ(brick.fracture.voxelSize, 0.002);
     EXPECT_NEAR((brick.position - Eigen::Vector3d(0, 0.035, 0)).norm(), 0.0, 1e-7);
 
     const SceneBody& ball = bodyNamed(scene, "ball");
@@ -94,7 +94,7 @@ TEST(FractureRb, ExampleMatchesItsGenerator) {
     EXPECT_NEAR(*ball.mass, 2.1, 1e-6);  // rigid: the file's mass
     EXPECT_EQ(ball.linearVelocity, Eigen::Vector3d(9, 0.5, 0));
     EXPECT_EQ(ball.angularVelocity, Eigen::Vector3d(0, 0, 5));
-    EXPECT_FALSE(ball.fracture.enabled);
+    EXPECT_FALSE(ball.fracture.fracturable);
     EXPECT_EQ(ball.motion, SceneMotion::Dynamic);
 
     const SceneBody& rock = bodyNamed(scene, "rock");
@@ -276,7 +276,7 @@ TEST(FractureRb, CsvLayoutAsFractureRbWritesIt) {
     EXPECT_TRUE(objects[2].breakable->ignoreCrackSelfIntersection);
     EXPECT_EQ(objects[2].breakable->materialModel, "lay(0,1,0,2,1,1)");
     EXPECT_EQ(objects[2].breakable->maxCracks, 4);
-    EXPECT_EQ(objects[2].breakable->method, SceneFractureMethod::Estimated);
+    EXPECT_EQ(objects[2].breakable->method, FractureMethod::Estimated);
     EXPECT_DOUBLE_EQ(objects[2].breakable->samplingDensity, 2.0);
 }
 

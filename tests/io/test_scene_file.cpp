@@ -58,13 +58,13 @@ TEST(SceneFile, DefaultsAndValues) {
     EXPECT_DOUBLE_EQ(rock.density, 2500.0);  // from the material
     EXPECT_FALSE(rock.mass.has_value());
     EXPECT_FALSE(rock.isStatic());
-    EXPECT_FALSE(rock.fracture.enabled);  // no effects section: nothing breaks
+    EXPECT_FALSE(rock.fracture.fracturable);  // no effects section: nothing breaks
     EXPECT_EQ(rock.motion, SceneMotion::Dynamic);
     EXPECT_DOUBLE_EQ(rock.friction, 0.5);
     EXPECT_DOUBLE_EQ(rock.restitution, 0.0);
-    EXPECT_EQ(rock.resolution.bemTriangles, 1000);
-    EXPECT_EQ(rock.resolution.collisionTriangles, 5000);
-    EXPECT_EQ(rock.resolution.voxelSize, 0.0);
+    EXPECT_EQ(rock.fracture.bemTriangleTarget, 1000);
+    EXPECT_EQ(rock.fracture.collisionTriangleTarget, 5000);
+    EXPECT_EQ(rock.fracture.voxelSize, 0.0);
     // Without an effects section a run writes OBJ frames only.
     EXPECT_TRUE(s.effects.outputs.obj);
     EXPECT_FALSE(s.effects.outputs.csv || s.effects.outputs.png || s.effects.outputs.vdb);
@@ -92,25 +92,25 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
                                "test.json", kMeshes);
     EXPECT_DOUBLE_EQ(s.bodies[0].friction, 0.8);
     const SceneBody& pane = s.bodies[1];
-    EXPECT_EQ(pane.resolution.bemTriangles, 600);
-    EXPECT_EQ(pane.resolution.collisionTriangles, 2400);
-    EXPECT_DOUBLE_EQ(pane.resolution.voxelSize, 0.002);
-    EXPECT_TRUE(pane.fracture.enabled);
-    EXPECT_EQ(pane.fracture.method, SceneFractureMethod::Hybrid);
-    EXPECT_EQ(pane.fracture.hybridThreshold, 3000);
-    EXPECT_EQ(pane.fracture.refractureDepth, 2);
+    EXPECT_EQ(pane.fracture.bemTriangleTarget, 600);
+    EXPECT_EQ(pane.fracture.collisionTriangleTarget, 2400);
+    EXPECT_DOUBLE_EQ(pane.fracture.voxelSize, 0.002);
+    EXPECT_TRUE(pane.fracture.fracturable);
+    EXPECT_EQ(pane.fracture.method, FractureMethod::Hybrid);
+    EXPECT_EQ(pane.fracture.hybridElementThreshold, 3000);
+    EXPECT_EQ(pane.fracture.maxRefractureDepth, 2);
     EXPECT_DOUBLE_EQ(pane.fracture.impulseThreshold, 0.5);
-    EXPECT_DOUBLE_EQ(pane.fracture.noise.amplitude, 0.2);
-    EXPECT_EQ(pane.fracture.noise.seed, 7u);
+    EXPECT_DOUBLE_EQ(pane.materialNoise.amplitude, 0.2);
+    EXPECT_EQ(pane.materialNoise.seed, 7u);
     const SceneBody& rock = s.bodies[2];
-    EXPECT_TRUE(rock.fracture.enabled);
-    EXPECT_EQ(rock.fracture.method, SceneFractureMethod::Estimated);
-    EXPECT_EQ(rock.fracture.refractureDepth, 3);  // default
+    EXPECT_TRUE(rock.fracture.fracturable);
+    EXPECT_EQ(rock.fracture.method, FractureMethod::Estimated);
+    EXPECT_EQ(rock.fracture.maxRefractureDepth, 3);  // default
     EXPECT_EQ(rock.motion, SceneMotion::Sleeping);
     EXPECT_DOUBLE_EQ(rock.restitution, 0.25);
     EXPECT_EQ(s.bodies[3].motion, SceneMotion::Kinematic);
     EXPECT_FALSE(s.bodies[3].isStatic());
-    EXPECT_FALSE(s.bodies[3].fracture.enabled);
+    EXPECT_FALSE(s.bodies[3].fracture.fracturable);
     EXPECT_TRUE(s.effects.outputs.obj && s.effects.outputs.csv && s.effects.outputs.png);
     EXPECT_FALSE(s.effects.outputs.vdb);
     EXPECT_EQ(s.effects.seed, 42u);
@@ -122,10 +122,10 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
 
     // --method overrides every breakable body and leaves the others alone.
     Scene overridden = s;
-    overrideFractureMethod(overridden, SceneFractureMethod::Full);
-    EXPECT_EQ(overridden.bodies[1].fracture.method, SceneFractureMethod::Full);
-    EXPECT_EQ(overridden.bodies[2].fracture.method, SceneFractureMethod::Full);
-    EXPECT_EQ(parseFractureMethod("est", "--method"), SceneFractureMethod::Estimated);
+    overrideFractureMethod(overridden, FractureMethod::Full);
+    EXPECT_EQ(overridden.bodies[1].fracture.method, FractureMethod::Full);
+    EXPECT_EQ(overridden.bodies[2].fracture.method, FractureMethod::Full);
+    EXPECT_EQ(parseFractureMethod("est", "--method"), FractureMethod::Estimated);
     try {
         parseFractureMethod("fast", "--method");
         ADD_FAILURE() << "unknown method accepted";

@@ -169,8 +169,8 @@ TEST(SceneWorld, FactoryCreatesWorldAndBodies) {
                                                 const TriangleMesh& surface) const override {
             ++bodies;
             surfaceVertices += surface.vertices.size();
-            return std::make_unique<TaggedBody>(info,
-                                                description.name + (description.fracture.enabled ? "*" : ""));
+            return std::make_unique<TaggedBody>(
+                info, description.name + (description.fracture.fracturable ? "*" : ""));
         }
     } factory;
     SceneWorld world(sceneOf(R"({"bodies": [{"name": "ground", "shape": {"type": "plane"}},

@@ -140,7 +140,7 @@ TEST(StatisticsCsv, RowsColumnsAndQuoting) {
         r.contacts = 3;
         r.impulse = 12.5;
         r.contactDuration = 2.5e-4;
-        r.method = SceneFractureMethod::Estimated;
+        r.method = FractureMethod::Estimated;
         r.bemTriangles = 800;
         r.crackTriangles = 212;
         r.fragments = {"bunny_f1", "bunny_f2"};
