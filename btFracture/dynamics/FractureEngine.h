@@ -81,6 +81,13 @@ public:
     // btfracture::Error for bad input: the world logs it and makes the body unbreakable.
     virtual FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
                                      FractureStatistics& stats) = 0;
+
+    // Mean curvature [1/m] of `body`'s surface near `bodyPoint` (body frame), whose inverse is the
+    // body's Hertz radius at a contact (§5.1). The world asks before calling fracture(), for every
+    // contact of a triggered body (and for a btFractureRigidBody on the other side). Default: the
+    // mesh proxy btFractureRigidBody::meanCurvatureAt; an engine that holds a level set
+    // (LevelSetBody::meanCurvature) can answer better.
+    virtual double meanCurvature(const btFractureRigidBody& body, const Eigen::Vector3d& bodyPoint) const;
 };
 
 }  // namespace btfracture

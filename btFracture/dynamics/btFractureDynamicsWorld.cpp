@@ -369,10 +369,10 @@ bool btFractureDynamicsWorld::buildContacts(btFractureRigidBody& body,
             const double approach = std::max(0.0, (otherVelocity - selfVelocity).dot(worldDirection));
 
             HertzBody a{body.material().youngsModulus(), body.material().poissonRatio(),
-                        double(body.getInvMass()), body.meanCurvatureAt(selfLocal)};
+                        double(body.getInvMass()), engine_->meanCurvature(body, selfLocal)};
             HertzBody b{otherMaterial.youngsModulus(), otherMaterial.poissonRatio(),
                         otherRigid ? double(otherRigid->getInvMass()) : 0.0,
-                        otherFracture ? otherFracture->meanCurvatureAt(otherLocal)
+                        otherFracture ? engine_->meanCurvature(*otherFracture, otherLocal)
                                       : shapeMeanCurvature(*other->getCollisionShape(), otherLocal)};
             if (a.inverseMass + b.inverseMass <= 0.0) continue;  // static against static: no impact
             const HertzImpact hertz = hertzImpact(a, b, approach, body.characteristicLength());

@@ -16,7 +16,10 @@
 //     sum. Manifolds without a fracturable body cost two tag compares; nothing is allocated.
 //  4. Cheap trigger: bodies whose sum stays under settings().impulseThreshold are done. For the
 //     others, the contacts are converted to BodyContact (body frame; approach speed from the
-//     pre-step velocities; Hertz duration, HertzContact.h) and FractureEngine::fracture() runs.
+//     pre-step velocities, i.e. before the solver changed them; Hertz duration, HertzContact.h,
+//     with curvatures from FractureEngine::meanCurvature or, for plain bodies, from their Bullet
+//     shape, ContactCurvature.h; materials: the body's, or defaultMaterial() for plain bodies)
+//     and FractureEngine::fracture() runs.
 //  5. If any body broke: restore the snapshot, remove the parents (Bullet drops their contact
 //     manifolds with their broadphase pairs), add the fragments with the parent's pre-step rigid
 //     motion (v + w x r, same w), push overlapping fragments apart (FragmentSeparation.h),

@@ -81,8 +81,8 @@ public:
     // Fine triangle mesh of the cut object's surface (OpenVDB volumeToMesh at adaptivity 0,
     // quads split along their shorter diagonal), outward oriented. Crack slabs show as slits.
     TriangleMesh visualMesh() const;
-    // visualMesh() decimated to about targetTriangles (MeshDecimation.h); stays closed and
-    // manifold when the visual mesh is.
+    // Closed manifold mesh of the solid (cracks closed) with at most targetTriangles triangles,
+    // decimated from the level set's mesh (MeshDecimation.h).
     TriangleMesh collisionMesh(int targetTriangles) const;
 
     // Writes a swept crack surface into the crack grid as a slab and removes the slab from the

@@ -204,8 +204,8 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
             ++dustCount;
             continue;
         }
-        f.collisionMesh = decimateMesh(surface, settings.collisionTriangles);
-        f.collisionMesh.name = f.name + " (collision)";
+        f.collisionMesh =
+            collisionMeshFromGrid(*phi, settings.collisionTriangles, f.name + " (collision)", &surface);
         f.convexHull = convexHullMesh(surface.vertices, f.name + " (convex hull)");
 
         // The fragment as a body of its own, with its incomplete cracks still cut into it.

@@ -3,11 +3,10 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
-#include <queue>
 #include <string>
 #include <vector>
 
@@ -16,11 +15,10 @@ namespace {
 
 using Quadric = Eigen::Matrix4d;
 
-struct Candidate {
+struct Candidate {  // small: the heap holds a few per edge
     double cost;
     int a, b;  // a < b
     int stampA, stampB;
-    Eigen::Vector3d target;
 };
 
 struct LaterCandidate {  // min-heap on (cost, a, b): deterministic order
@@ -40,7 +38,8 @@ public:
           incident_(mesh.vertices.size()),
           quadric_(mesh.vertices.size(), Quadric::Zero()),
           stamp_(mesh.vertices.size(), 0),
-          vertexAlive_(mesh.vertices.size(), 1) {
+          vertexAlive_(mesh.vertices.size(), 1),
+          mark_(mesh.vertices.size(), 0) {
         liveTriangles_ = static_cast<int>(triangles_.size());
         liveVertices_ = static_cast<int>(position_.size());
         double totalArea = 0.0;
@@ -68,19 +67,24 @@ public:
     }
 
     void run(int targetTriangles) {
+        Eigen::Vector3d target;
         for (int t = 0; t < static_cast<int>(triangles_.size()); ++t)
             for (int k = 0; k < 3; ++k) {
                 const int a = triangles_[t][k], b = triangles_[t][(k + 1) % 3];
-                if (a < b) push(a, b);  // each edge once (the other triangle has b -> a)
+                // Each edge once (the other triangle has b -> a).
+                if (a < b) heap_.push_back({plan(a, b, target), a, b, stamp_[a], stamp_[b]});
             }
-        while (liveTriangles_ > targetTriangles && !queue_.empty()) {
-            const Candidate c = queue_.top();
-            queue_.pop();
+        std::make_heap(heap_.begin(), heap_.end(), LaterCandidate());
+        while (liveTriangles_ > targetTriangles && !heap_.empty()) {
+            std::pop_heap(heap_.begin(), heap_.end(), LaterCandidate());
+            const Candidate c = heap_.back();
+            heap_.pop_back();
             if (!vertexAlive_[c.a] || !vertexAlive_[c.b] || stamp_[c.a] != c.stampA ||
                 stamp_[c.b] != c.stampB)
                 continue;
-            if (!collapseAllowed(c.a, c.b, c.target)) continue;
-            collapse(c.a, c.b, c.target);
+            plan(c.a, c.b, target);
+            if (!collapseAllowed(c.a, c.b, target)) continue;
+            collapse(c.a, c.b, target);
         }
     }
 
@@ -115,18 +119,22 @@ private:
         return std::max(0.0, h.dot(q * h));
     }
 
-    void push(int a, int b) {
-        if (a > b) std::swap(a, b);
+    // Cost of collapsing edge ab and the position the merged vertex takes.
+    double plan(int a, int b, Eigen::Vector3d& best) const {
         const Quadric q = quadric_[a] + quadric_[b];
         const Eigen::Vector3d pa = position_[a], pb = position_[b], mid = 0.5 * (pa + pb);
         // Minimiser of the quadric when well posed and near the edge; else the best of a, b, mid.
-        Eigen::Vector3d best = mid;
+        best = mid;
         double bestError = quadricError(q, mid);
+        // Cramer's rule; skipped when A is near singular (flat or ridge regions).
         const Eigen::Matrix3d A = q.topLeftCorner<3, 3>();
-        Eigen::FullPivLU<Eigen::Matrix3d> lu(A);
-        lu.setThreshold(1e-7);
-        if (lu.isInvertible()) {
-            const Eigen::Vector3d x = lu.solve(-q.topRightCorner<3, 1>());
+        const Eigen::Vector3d rhs = -q.topRightCorner<3, 1>();
+        const Eigen::Vector3d c0 = A.col(1).cross(A.col(2)), c1 = A.col(2).cross(A.col(0)),
+                              c2 = A.col(0).cross(A.col(1));
+        const double det = A.col(0).dot(c0);
+        const double scale = A.norm();
+        if (std::abs(det) > 1e-9 * scale * scale * scale) {
+            const Eigen::Vector3d x = Eigen::Vector3d(c0.dot(rhs), c1.dot(rhs), c2.dot(rhs)) / det;
             if (x.allFinite() && (x - mid).norm() <= (pb - pa).norm()) {
                 best = x;
                 bestError = quadricError(q, x);
@@ -139,8 +147,14 @@ private:
                 best = p;
             }
         }
-        const double cost = bestError + lengthWeight_ * (pb - pa).squaredNorm();
-        queue_.push({cost, a, b, stamp_[a], stamp_[b], best});
+        return bestError + lengthWeight_ * (pb - pa).squaredNorm();
+    }
+
+    void push(int a, int b) {
+        if (a > b) std::swap(a, b);
+        Eigen::Vector3d target;
+        heap_.push_back({plan(a, b, target), a, b, stamp_[a], stamp_[b]});
+        std::push_heap(heap_.begin(), heap_.end(), LaterCandidate());
     }
 
     void neighbours(int v, std::vector<int>& out) const {
@@ -161,12 +175,18 @@ private:
             if (tri[0] == b || tri[1] == b || tri[2] == b) ++shared;
         }
         if (shared != 2) return false;
-        neighbours(a, ringA_);
-        neighbours(b, ringB_);
-        common_.clear();
-        std::set_intersection(ringA_.begin(), ringA_.end(), ringB_.begin(), ringB_.end(),
-                              std::back_inserter(common_));
-        if (common_.size() != 2) return false;
+        ++markStamp_;
+        for (int t : incident_[a])
+            for (int w : triangles_[t]) mark_[w] = markStamp_;
+        int common = 0;
+        ++markStamp_;
+        for (int t : incident_[b])
+            for (int w : triangles_[t])
+                if (w != a && w != b && mark_[w] == markStamp_ - 1) {
+                    mark_[w] = markStamp_;  // count each common neighbour once
+                    ++common;
+                }
+        if (common != 2) return false;
         // Geometry: the surviving triangles around a and b must keep their orientation and area.
         for (int v : {a, b})
             for (int t : incident_[v]) {
@@ -210,8 +230,8 @@ private:
         quadric_[a] += quadric_[b];
         ++stamp_[a];
         ++stamp_[b];
-        neighbours(a, ringA_);
-        for (int w : ringA_) push(a, w);
+        neighbours(a, ring_);
+        for (int w : ring_) push(a, w);
     }
 
     std::vector<Eigen::Vector3d> position_;
@@ -225,8 +245,10 @@ private:
     int liveVertices_ = 0;
     double lengthWeight_ = 0.0;
     double minArea2_ = 0.0;
-    std::priority_queue<Candidate, std::vector<Candidate>, LaterCandidate> queue_;
-    std::vector<int> ringA_, ringB_, common_;
+    std::vector<Candidate> heap_;  // min-heap (LaterCandidate), stale entries skipped by stamps
+    std::vector<int> ring_;
+    std::vector<int> mark_;
+    int markStamp_ = 0;
 };
 
 }  // namespace

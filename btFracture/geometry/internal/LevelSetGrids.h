@@ -36,8 +36,14 @@ FloatGrid::Ptr makeLevelSet(double voxelSize);
 // Deterministic: independent of the thread count.
 MassProperties integrateMass(const FloatGrid& phi);
 
-// Closed triangle mesh of the zero level set, outward oriented (adaptivity 0).
-TriangleMesh meshFromGrid(const FloatGrid& phi, const std::string& name);
+// Closed triangle mesh of the zero level set, outward oriented; adaptivity as in OpenVDB's
+// volumeToMesh (0: one quad per surface voxel face, split into two triangles).
+TriangleMesh meshFromGrid(const FloatGrid& phi, const std::string& name, double adaptivity = 0.0);
+
+// Closed manifold mesh of the zero level set with at most targetTriangles triangles (decimated).
+// `fineMesh`, if given, must be meshFromGrid(phi) (saves re-meshing on the fallback path).
+TriangleMesh collisionMeshFromGrid(const FloatGrid& phi, int targetTriangles, const std::string& name,
+                                   const TriangleMesh* fineMesh);
 
 // Index-space centre of voxel ijk in world units.
 inline Eigen::Vector3d voxelCentre(const Coord& ijk, double voxelSize) {
