@@ -3,6 +3,7 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
+#include <btFracture/core/MeshCheck.h>
 #include <btFracture/io/MeshReader.h>
 
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
@@ -137,7 +138,16 @@ struct SceneWorld::Impl {
     std::vector<ShapeStorage> shapes;  // parallel to bodies
     std::vector<std::unique_ptr<btRigidBody>> ownedBodies;
     std::vector<Body> bodies;
+    // Kinematic bodies: start pose and constant velocities, so that poses come from the elapsed
+    // time without accumulating rounding.
+    struct Kinematic {
+        btRigidBody* body;
+        btTransform start;
+        btVector3 linearVelocity, angularVelocity;
+    };
+    std::vector<Kinematic> kinematic;
     int frames = 0;
+    long long bulletSteps = 0;
 
     ~Impl() {
         // Bodies leave the world before anything they reference goes away; then the world goes
@@ -171,7 +181,12 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
             MassProperties mass;
             PrincipalAxes axes;
             try {
-                mesh = readMesh(shape.meshFile);
+                if (shape.meshData) {
+                    mesh = *shape.meshData;
+                    requireClosedSolid(mesh);
+                } else {
+                    mesh = readMesh(shape.meshFile);
+                }
                 for (auto& v : mesh.vertices) v = v.cwiseProduct(description.scale);
                 mass = computeMassProperties(mesh);
                 axes = principalAxes(mass.inertiaPerDensity);
@@ -194,8 +209,7 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
                                                     static_cast<int>(mesh.vertices.size()),
                                                     static_cast<btScalar>(margin), btScalar(0.25));
                 if (!(shift > 0) || hull.vertices.size() < 4)
-                    throw Error(bodyContext(scene, description) + ": convex hull of '" + shape.meshFile +
-                                "' failed");
+                    throw Error(bodyContext(scene, description) + ": convex hull of its mesh failed");
                 if (shift < 0.999 * margin)
                     logf(LogLevel::Info, bodyContext(scene, description), ": hull shrink limited to ", shift,
                          " m (margin ", margin, " m) by the hull's thickness");
@@ -249,7 +263,7 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
     body.surface.name = description.name;
 
     double mass = 0.0;
-    if (!description.isStatic())
+    if (!description.isStatic() && description.motion != SceneMotion::Kinematic)
         mass = description.mass ? *description.mass : description.density * body.volume;
     const Eigen::Vector3d inertia = body.volume > 0.0
                                         ? Eigen::Vector3d(mass / body.volume * unitDensityInertia)
@@ -265,7 +279,16 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
     if (!rigidBody) throw Error(bodyContext(scene, description) + ": the scene factory created no body");
     rigidBody->setLinearVelocity(toBullet(description.linearVelocity));
     rigidBody->setAngularVelocity(toBullet(description.angularVelocity));
+    rigidBody->setFriction(static_cast<btScalar>(description.friction));
+    rigidBody->setRestitution(static_cast<btScalar>(description.restitution));
+    if (description.motion == SceneMotion::Kinematic) {
+        rigidBody->setCollisionFlags(rigidBody->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+        rigidBody->setActivationState(DISABLE_DEACTIVATION);
+        kinematic.push_back({rigidBody.get(), rigidBody->getWorldTransform(), rigidBody->getLinearVelocity(),
+                             rigidBody->getAngularVelocity()});
+    }
     world->addRigidBody(rigidBody.get());
+    if (description.motion == SceneMotion::Sleeping) rigidBody->setActivationState(ISLAND_SLEEPING);
     body.rigidBody = rigidBody.get();
     ownedBodies.push_back(std::move(rigidBody));
     shapes.push_back(std::move(storage));
@@ -304,7 +327,22 @@ void SceneWorld::stepFrame() {
     const btScalar h = static_cast<btScalar>(settings.dt / settings.substeps);
     // maxSubSteps = 0: exactly one internal step of h per call, with no accumulator that could
     // round to one step more or less.
-    for (int k = 0; k < settings.substeps; ++k) impl_->world->stepSimulation(h, 0);
+    for (int k = 0; k < settings.substeps; ++k) {
+        // Kinematic bodies move at their constant velocities: pose at the end of this step, from
+        // the start pose and the elapsed time. Bullet derives the velocity the contact solver
+        // sees from the change of transform (btRigidBody::saveKinematicState).
+        const double t = static_cast<double>(++impl_->bulletSteps) * settings.dt / settings.substeps;
+        for (const Impl::Kinematic& kin : impl_->kinematic) {
+            btTransform pose = kin.start;
+            pose.setOrigin(kin.start.getOrigin() + kin.linearVelocity * static_cast<btScalar>(t));
+            const btScalar speed = kin.angularVelocity.length();
+            if (speed > btScalar(0))
+                pose.setRotation(btQuaternion(kin.angularVelocity / speed, speed * static_cast<btScalar>(t)) *
+                                 kin.start.getRotation());
+            kin.body->setCenterOfMassTransform(pose);
+        }
+        impl_->world->stepSimulation(h, 0);
+    }
     ++impl_->frames;
 }
 

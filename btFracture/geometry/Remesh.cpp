@@ -1,0 +1,233 @@
+#include <btFracture/geometry/Remesh.h>
+
+#include <btFracture/core/Error.h>
+#include <btFracture/core/Log.h>
+#include <btFracture/core/Timer.h>
+#include <btFracture/geometry/ClosestPointTree.h>
+#include <btFracture/geometry/HalfEdgeMesh.h>
+#include <btFracture/geometry/IntersectionSmoothing.h>
+#include <btFracture/geometry/MeshQuality.h>
+#include <btFracture/geometry/QualityRepair.h>
+#include <btFracture/geometry/RemeshEdits.h>
+#include <btFracture/geometry/SurfaceFit.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <sstream>
+#include <utility>
+
+namespace btfracture {
+namespace {
+
+constexpr int kMinTargetTriangles = 20;
+constexpr double kMaxMinAngleDegrees = 35.0;
+constexpr double kSplitAbove = 4.0 / 3.0;     // split edges longer than this times L
+constexpr double kCollapseBelow = 4.0 / 5.0;  // collapse edges shorter than this times L
+constexpr double kMinNormalCosine = 0.0;      // isotropic edits never turn a face over
+// A collapse or relaxation may move the surface by at most this times L (HalfEdgeMesh::EditPreview
+// deviation); without it, thin tips such as the bunny's ears erode a little every iteration.
+constexpr double kMaxDeviation = 0.1;
+constexpr int kMaxIntersectionRounds = 20;
+
+double surfaceArea(const TriangleMesh& mesh) {
+    double area = 0.0;
+    for (const auto& tri : mesh.triangles)
+        area += 0.5 * (mesh.vertices[tri[1]] - mesh.vertices[tri[0]])
+                          .cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]])
+                          .norm();
+    return area;
+}
+
+void splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double maxLength) {
+    // Longest edge first: its new edges are then at most sqrt(3)/2 as long as it was (median
+    // of a triangle whose longest edge is split), so this ends even among degenerate triangles.
+    std::priority_queue<std::pair<double, int>> queue;
+    auto push = [&](int h) {
+        if (mesh.twin(h) < h) h = mesh.twin(h);
+        const double length = mesh.edgeLength(h);
+        if (length > maxLength) queue.emplace(length, h);
+    };
+    for (int h = 0; h < mesh.halfedgeSlots(); ++h)
+        if (mesh.halfedgeAlive(h) && h < mesh.twin(h)) push(h);
+    while (!queue.empty()) {
+        const auto [length, h] = queue.top();
+        queue.pop();
+        if (mesh.twin(h) < h || mesh.edgeLength(h) != length) continue;  // changed since it was queued
+        // The midpoint goes onto the surface only when that moves it little (a tenth of the
+        // edge), which keeps the new edges shorter than this one; relaxation projects the rest.
+        const Eigen::Vector3d midpoint =
+            0.5 * (mesh.position(mesh.origin(h)) + mesh.position(mesh.target(h)));
+        const Eigen::Vector3d projected = edgeMidpointOnSurface(mesh, surface, h);
+        const int m = mesh.splitEdge(h, (projected - midpoint).norm() <= 0.1 * length ? projected : midpoint);
+        // Every edge of the four faces at m: the split renumbered some of the outer ones.
+        mesh.forEachOutgoing(m, [&](int g) {
+            push(g);
+            push(HalfEdgeMesh::next(g));
+        });
+    }
+}
+
+void collapseShortEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double minLength,
+                        double maxLength, double maxDeviation) {
+    constexpr int maxSweeps = 10;
+    const CollapseLimits limits{maxLength, kMinNormalCosine, maxDeviation};
+    for (int sweep = 0; sweep < maxSweeps; ++sweep) {
+        int collapses = 0;
+        for (int h = 0; h < mesh.halfedgeSlots(); ++h) {
+            if (!mesh.halfedgeAlive(h) || mesh.twin(h) < h || mesh.edgeLength(h) >= minLength) continue;
+            const CollapsePlan plan = planCollapse(mesh, surface, h, limits, CollapseGoal::KeepShape);
+            if (!plan.valid) continue;
+            mesh.collapseEdge(h, plan.position);
+            ++collapses;
+        }
+        if (collapses == 0) break;
+    }
+}
+
+// Flips edges where that brings the four vertices closer to valence 6 (closed mesh).
+void flipTowardsRegularValence(HalfEdgeMesh& mesh) {
+    auto deviation = [](int a, int b, int c, int d) {
+        return (a - 6) * (a - 6) + (b - 6) * (b - 6) + (c - 6) * (c - 6) + (d - 6) * (d - 6);
+    };
+    for (int h = 0; h < mesh.halfedgeSlots(); ++h) {
+        if (!mesh.halfedgeAlive(h) || mesh.twin(h) < h) continue;
+        const int a = mesh.valence(mesh.origin(h)), b = mesh.valence(mesh.target(h));
+        const int c = mesh.valence(mesh.apex(h)), d = mesh.valence(mesh.apex(mesh.twin(h)));
+        if (deviation(a - 1, b - 1, c + 1, d + 1) >= deviation(a, b, c, d) || !mesh.flipKeepsManifold(h))
+            continue;
+        if (mesh.previewFlip(h).minNormalCosine < kMinNormalCosine) continue;
+        mesh.flipEdge(h);
+    }
+}
+
+// Moves every vertex part of the way to the area-weighted centroid of its triangles, within its
+// tangent plane, and projects it onto the surface; moves that would shift the surface by more
+// than maxDeviation (at tips) are left out.
+void relaxTangentially(HalfEdgeMesh& mesh, const ClosestPointTree& surface, double step,
+                       double maxDeviation) {
+    std::vector<Eigen::Vector3d> moved(mesh.vertexSlots(), Eigen::Vector3d::Zero());
+    for (int v = 0; v < mesh.vertexSlots(); ++v) {
+        if (!mesh.vertexAlive(v)) continue;
+        Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+        double weight = 0.0;
+        mesh.forEachOutgoing(v, [&](int h) {
+            const int f = HalfEdgeMesh::face(h);
+            const auto tri = mesh.faceVertices(f);
+            const double area = mesh.faceAreaNormal(f).norm();
+            centroid += area * (mesh.position(tri[0]) + mesh.position(tri[1]) + mesh.position(tri[2])) / 3.0;
+            weight += area;
+        });
+        const Eigen::Vector3d& p = mesh.position(v);
+        const Eigen::Vector3d n = mesh.vertexNormal(v);
+        Eigen::Vector3d shift =
+            weight > 0.0 ? Eigen::Vector3d(centroid / weight - p) : Eigen::Vector3d::Zero();
+        shift -= n * n.dot(shift);
+        moved[v] = projectOntoSurface(surface, p + step * shift, n);
+    }
+    for (int v = 0; v < mesh.vertexSlots(); ++v)
+        if (mesh.vertexAlive(v) && moveDeviation(mesh, v, moved[v]) <= maxDeviation)
+            mesh.setPosition(v, moved[v]);
+}
+
+void requireValidArguments(const std::string& source, int targetTriangles, const RemeshOptions& options) {
+    if (targetTriangles < kMinTargetTriangles)
+        throw Error(source + ": BEM remesh target of " + std::to_string(targetTriangles) +
+                    " triangles is below the minimum of " + std::to_string(kMinTargetTriangles));
+    if (options.iterations < 1)
+        throw Error(source + ": RemeshOptions.iterations must be >= 1, got " +
+                    std::to_string(options.iterations));
+    if (!(options.minAngleDegrees > 0.0 && options.minAngleDegrees <= kMaxMinAngleDegrees))
+        throw Error(source + ": RemeshOptions.minAngleDegrees must be in (0, " +
+                    std::to_string(kMaxMinAngleDegrees) + "], got " +
+                    std::to_string(options.minAngleDegrees));
+    if (options.repairPasses < 0)
+        throw Error(source + ": RemeshOptions.repairPasses must be >= 0, got " +
+                    std::to_string(options.repairPasses));
+    if (!(options.smoothingStep > 0.0 && options.smoothingStep <= 1.0))
+        throw Error(source + ": RemeshOptions.smoothingStep must be in (0, 1], got " +
+                    std::to_string(options.smoothingStep));
+}
+
+}  // namespace
+
+TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const RemeshOptions& options) {
+    const std::string source = input.name.empty() ? std::string("<unnamed mesh>") : input.name;
+    requireValidArguments(source, targetTriangles, options);
+    const Timer timer;
+    HalfEdgeMesh mesh(input);  // throws unless closed, manifold and oriented
+    const ClosestPointTree surface(input);
+    const double area = surfaceArea(input);
+    if (!(area > 0.0) || !std::isfinite(area))
+        throw Error(source + ": cannot remesh a surface of area " + std::to_string(area));
+
+    // Edge length of equilateral triangles that tile the area with the target count.
+    double edgeLength = std::sqrt(4.0 * area / (std::sqrt(3.0) * targetTriangles));
+    for (int iteration = 0; iteration < options.iterations; ++iteration) {
+        splitLongEdges(mesh, surface, kSplitAbove * edgeLength);
+        collapseShortEdges(mesh, surface, kCollapseBelow * edgeLength, kSplitAbove * edgeLength,
+                           kMaxDeviation * edgeLength);
+        flipTowardsRegularValence(mesh);
+        relaxTangentially(mesh, surface, options.smoothingStep, kMaxDeviation * edgeLength);
+        mesh.compact();
+        // Steer the count to the target (faces scale with 1 / L^2), except in the last iterations.
+        if (iteration + 2 < options.iterations) {
+            const double ratio = static_cast<double>(mesh.faceCount()) / targetTriangles;
+            edgeLength *= std::clamp(std::sqrt(ratio), 0.8, 1.25);
+        }
+    }
+
+    const double minAngle = options.minAngleDegrees * M_PI / 180.0;
+    const QualityRepairResult repair =
+        repairSmallAngles(mesh, surface, minAngle, edgeLength, options.repairPasses);
+    const IntersectionSmoothingResult untangle =
+        smoothSelfIntersections(mesh, surface, minAngle, edgeLength, kMaxIntersectionRounds);
+    if (untangle.rounds > 0)
+        logf(LogLevel::Info, source, ": ", untangle.moves, " vertex moves and ", untangle.edits,
+             " flips or collapses in ", untangle.rounds, " rounds to separate self-intersecting triangles, ",
+             untangle.remainingPairs, " pairs left");
+    if (untangle.remainingPairs > 0)
+        logf(LogLevel::Warning, source, ": BEM remesh at ", targetTriangles, " triangles still has ",
+             untangle.remainingPairs,
+             " pairs of intersecting triangles (parts of the input closer together than the edge length ",
+             edgeLength, "); a larger target resolves them");
+    if (options.fitAcrossSurface) {
+        const SurfaceFitResult fit = fitAcrossSurface(mesh, surface, minAngle, kMaxDeviation * edgeLength);
+        logf(LogLevel::Info, source, ": vertices moved up to ", fit.largestOffset,
+             " along their normals to straddle the input surface (", fit.limitedVertices, " limited to ",
+             kMaxDeviation * edgeLength, ", ", fit.keptVertices,
+             " kept in place to keep angles and avoid intersections)");
+    }
+    mesh.compact();
+    TriangleMesh output = mesh.toTriangleMesh(source + " (BEM remesh)");
+
+    const MeshQuality quality = measureQuality(output, options.minAngleDegrees);
+    logf(LogLevel::Info, source, ": remeshed ", input.triangles.size(), " -> ", output.triangles.size(),
+         " triangles (target ", targetTriangles, ", edge length ", edgeLength, "), min angle ",
+         quality.minAngleDegrees, " deg, mean min angle ", quality.meanMinAngleDegrees, " deg, ",
+         repair.edits, " repair edits in ", repair.passes, " passes, ", timer.seconds(), " s");
+    if (quality.trianglesBelowAngle > 0) {
+        std::ostringstream where;
+        int listed = 0;
+        for (int t = 0; t < quality.triangleCount && listed < 5; ++t) {
+            const auto& tri = output.triangles[t];
+            const Eigen::Vector3d& a = output.vertices[tri[0]];
+            const Eigen::Vector3d& b = output.vertices[tri[1]];
+            const Eigen::Vector3d& c = output.vertices[tri[2]];
+            const double angle = triangleMinAngle(a, b, c) * 180.0 / M_PI;
+            if (angle >= options.minAngleDegrees) continue;
+            const Eigen::Vector3d centre = (a + b + c) / 3.0;
+            where << (listed++ ? "; " : "") << "triangle " << t << " at (" << centre.x() << ", " << centre.y()
+                  << ", " << centre.z() << "): " << angle << " deg";
+        }
+        logf(LogLevel::Warning, source, ": BEM remesh left ", quality.trianglesBelowAngle,
+             " triangles below the minimum angle of ", options.minAngleDegrees,
+             " deg that no local edit could fix (", where.str(),
+             quality.trianglesBelowAngle > listed ? "; ..." : "", ")");
+    }
+    return output;
+}
+
+}  // namespace btfracture

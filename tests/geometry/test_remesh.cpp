@@ -1,0 +1,322 @@
+// BEM remeshing (geometry/Remesh.h) and its parts: half-edge edits, closest-point queries,
+// quality measures and surface distances.
+#include <btFracture/core/ClosestPoint.h>
+#include <btFracture/core/Error.h>
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/core/MeshCheck.h>
+#include <btFracture/core/Primitives.h>
+#include <btFracture/geometry/ClosestPointTree.h>
+#include <btFracture/geometry/HalfEdgeMesh.h>
+#include <btFracture/geometry/MeshQuality.h>
+#include <btFracture/geometry/Remesh.h>
+#include <btFracture/geometry/SurfaceDistance.h>
+#include <btFracture/io/MeshReader.h>
+
+#include <gtest/gtest.h>
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <string>
+
+using namespace btfracture;
+
+namespace {
+
+const TriangleMesh& bunny() {
+    static const TriangleMesh mesh = readMesh(std::string(BTFRACTURE_MESH_DIR) + "/bunny.obj");
+    return mesh;
+}
+
+const TriangleMesh& armadillo() {
+    static const TriangleMesh mesh = readMesh(std::string(BTFRACTURE_MESH_DIR) + "/armadillo.obj");
+    return mesh;
+}
+
+double bboxDiagonal(const TriangleMesh& mesh) {
+    Eigen::AlignedBox3d box;
+    for (const auto& v : mesh.vertices) box.extend(v);
+    return box.diagonal().norm();
+}
+
+int eulerCharacteristic(const TriangleMesh& mesh) {
+    std::map<std::pair<int, int>, int> edges;
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) ++edges[std::minmax(t[k], t[(k + 1) % 3])];
+    return static_cast<int>(mesh.vertices.size()) - static_cast<int>(edges.size()) +
+           static_cast<int>(mesh.triangles.size());
+}
+
+// Torus around the y axis: major radius R, tube radius r, n x m quads split in two.
+TriangleMesh makeTorus(double R, double r, int n, int m) {
+    TriangleMesh mesh;
+    mesh.name = "torus";
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) {
+            const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / m;
+            mesh.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), r * std::sin(v),
+                                       (R + r * std::cos(v)) * std::sin(u));
+        }
+    auto index = [&](int i, int j) { return (i % n) * m + (j % m); };
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) {
+            const int a = index(i, j), b = index(i + 1, j), c = index(i + 1, j + 1), d = index(i, j + 1);
+            mesh.triangles.push_back({a, c, b});
+            mesh.triangles.push_back({a, d, c});
+        }
+    if (inspectMesh(mesh).signedVolume < 0)
+        for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+    return mesh;
+}
+
+struct RemeshTolerances {
+    double hausdorff;  // relative to the input's bounding-box diagonal
+    double volume;     // relative to the input's volume
+};
+
+// Remeshes `input` and checks every acceptance point of the BEM mesh; prints what it measured.
+TriangleMesh checkBemMesh(const TriangleMesh& input, int target, const RemeshTolerances& tolerance) {
+    const TriangleMesh output = remeshForBem(input, target);
+    const MeshDefects defects = inspectMesh(output);
+    EXPECT_TRUE(defects.isClosedSolid()) << input.name << " @ " << target << ": " << defects.describe();
+    EXPECT_EQ(defects.components, inspectMesh(input).components);
+    EXPECT_EQ(eulerCharacteristic(output), eulerCharacteristic(input)) << "genus changed";
+
+    const MeshQuality quality = measureQuality(output, 20.0);
+    const int count = quality.triangleCount;
+    EXPECT_NEAR(count, target, 0.1 * target) << input.name;
+    EXPECT_GE(quality.minAngleDegrees, 20.0) << input.name << " @ " << target;
+    EXPECT_EQ(quality.trianglesBelowAngle, 0);
+
+    const double hausdorff = hausdorffDistance(input, output) / bboxDiagonal(input);
+    EXPECT_LT(hausdorff, tolerance.hausdorff) << input.name << " @ " << target;
+    const double volumeError = defects.signedVolume / inspectMesh(input).signedVolume - 1.0;
+    EXPECT_LT(std::abs(volumeError), tolerance.volume) << input.name << " @ " << target;
+
+    std::printf(
+        "  %-10s target %5d: %5d triangles (%+.1f %%), min angle %.1f deg (mean of minima %.1f), max angle "
+        "%.1f deg, Hausdorff %.4f of bbox diagonal, volume %+.2f %%\n",
+        input.name.substr(input.name.find_last_of('/') + 1).c_str(), target, count,
+        100.0 * (count - target) / target, quality.minAngleDegrees, quality.meanMinAngleDegrees,
+        quality.maxAngleDegrees, hausdorff, 100.0 * volumeError);
+    return output;
+}
+
+}  // namespace
+
+// ---- Acceptance: BEM meshes of the test shapes --------------------------------------------------
+
+TEST(Remesh, BunnyAtThreeResolutions) {
+    checkBemMesh(bunny(), 500, {0.05, 0.02});
+    checkBemMesh(bunny(), 1000, {0.035, 0.01});
+    checkBemMesh(bunny(), 3000, {0.02, 0.005});
+}
+
+TEST(Remesh, ArmadilloAtThreeResolutions) {
+    checkBemMesh(armadillo(), 500, {0.05, 0.05});
+    checkBemMesh(armadillo(), 1000, {0.035, 0.025});
+    checkBemMesh(armadillo(), 3000, {0.03, 0.01});
+}
+
+TEST(Remesh, SphereAtThreeResolutions) {
+    TriangleMesh sphere = makeGeodesicSphere(1.0, 32);
+    sphere.name = "sphere";
+    checkBemMesh(sphere, 500, {0.01, 0.005});
+    checkBemMesh(sphere, 1000, {0.01, 0.003});
+    checkBemMesh(sphere, 3000, {0.005, 0.002});
+}
+
+TEST(Remesh, BoxAtThreeResolutions) {
+    // Sharp edges and corners are not tracked: they are rounded over about one edge length.
+    TriangleMesh box = makeBox(Eigen::Vector3d(1.0, 0.5, 0.25));
+    box.name = "box";
+    checkBemMesh(box, 500, {0.03, 0.03});
+    checkBemMesh(box, 1000, {0.02, 0.02});
+    checkBemMesh(box, 3000, {0.015, 0.01});
+}
+
+TEST(Remesh, ThinTorusKeepsItsHandle) {
+    // Tube circumference ~3 edge lengths: collapses must not pinch the handle shut.
+    const TriangleMesh torus = makeTorus(1.0, 0.12, 96, 24);
+    const TriangleMesh output = remeshForBem(torus, 300);
+    const MeshDefects defects = inspectMesh(output);
+    EXPECT_TRUE(defects.isClosedManifold()) << defects.describe();
+    EXPECT_EQ(eulerCharacteristic(output), 0);
+    EXPECT_GE(measureQuality(output).minAngleDegrees, 20.0);
+}
+
+TEST(Remesh, SphereVolumeConvergesToFourThirdsPi) {
+    TriangleMesh sphere = makeGeodesicSphere(1.0, 64);
+    sphere.name = "sphere";
+    const double exact = 4.0 / 3.0 * M_PI;
+    // Vertices on the sphere (no surface fit): the inscribed polyhedron misses a volume
+    // proportional to L^2 ~ 1 / N, so four times the triangles leave about a quarter of the error.
+    RemeshOptions onSurface;
+    onSurface.fitAcrossSurface = false;
+    double previous = INFINITY;
+    for (int target : {250, 1000, 4000}) {
+        const double error = exact - computeMassProperties(remeshForBem(sphere, target, onSurface)).volume;
+        EXPECT_GT(error, 0.0) << "an inscribed mesh has less volume";
+        if (std::isfinite(previous)) {
+            EXPECT_GT(previous / error, 3.0) << target;
+            EXPECT_LT(previous / error, 5.5) << target;
+        }
+        std::printf("  inscribed sphere, target %4d: volume error %.3e (%.3f %%)\n", target, error,
+                    100 * error / exact);
+        previous = error;
+    }
+    // With the surface fit the volume error is far smaller at every resolution.
+    for (int target : {250, 1000, 4000}) {
+        const double error = std::abs(exact - computeMassProperties(remeshForBem(sphere, target)).volume);
+        EXPECT_LT(error / exact, 2e-3) << target;
+        std::printf("  fitted sphere,    target %4d: volume error %.3e (%.3f %%)\n", target, error,
+                    100 * error / exact);
+    }
+}
+
+TEST(Remesh, IsDeterministic) {
+    const TriangleMesh a = remeshForBem(bunny(), 800);
+    const TriangleMesh b = remeshForBem(bunny(), 800);
+    ASSERT_EQ(a.triangles, b.triangles);
+    ASSERT_EQ(a.vertices.size(), b.vertices.size());
+    for (std::size_t i = 0; i < a.vertices.size(); ++i) EXPECT_EQ(a.vertices[i], b.vertices[i]);
+}
+
+TEST(Remesh, RejectsBadInput) {
+    TriangleMesh open = bunny();
+    open.name = "open bunny";
+    open.triangles.pop_back();
+    try {
+        remeshForBem(open, 500);
+        FAIL() << "open mesh accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("open bunny"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("boundary edges"), std::string::npos) << e.what();
+    }
+    try {
+        remeshForBem(bunny(), 12);
+        FAIL() << "target of 12 triangles accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("12 triangles is below the minimum of 20"), std::string::npos)
+            << e.what();
+    }
+    RemeshOptions options;
+    options.minAngleDegrees = 50.0;
+    EXPECT_THROW(remeshForBem(bunny(), 500, options), Error);
+    options = {};
+    options.iterations = 0;
+    EXPECT_THROW(remeshForBem(bunny(), 500, options), Error);
+    options = {};
+    options.smoothingStep = 0.0;
+    EXPECT_THROW(remeshForBem(bunny(), 500, options), Error);
+    EXPECT_THROW(remeshForBem(TriangleMesh{}, 500), Error);
+}
+
+// ---- Parts ---------------------------------------------------------------------------------------
+
+TEST(MeshQuality, KnownAngles) {
+    TriangleMesh right;
+    right.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    right.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    const MeshQuality q = measureQuality(right, 50.0);
+    EXPECT_NEAR(q.minAngleDegrees, 45.0, 1e-12);
+    EXPECT_NEAR(q.maxAngleDegrees, 90.0, 1e-12);
+    EXPECT_NEAR(q.meanMinAngleDegrees, (3 * 45.0 + 60.0) / 4, 1e-12);
+    EXPECT_EQ(q.trianglesBelowAngle, 3);
+    EXPECT_NEAR(q.minEdgeLength, 1.0, 1e-15);
+    EXPECT_NEAR(q.maxEdgeLength, std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(q.edgeLengthRatio, std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(q.meanEdgeLength, (3 + 3 * std::sqrt(2.0)) / 6, 1e-15);
+    EXPECT_THROW(measureQuality(TriangleMesh{}), Error);
+}
+
+TEST(ClosestPointTree, MatchesBruteForce) {
+    const TriangleMesh& mesh = bunny();
+    const ClosestPointTree tree(mesh);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> coordinate(-8.0, 12.0);
+    for (int i = 0; i < 300; ++i) {
+        const Eigen::Vector3d p(coordinate(random), coordinate(random), coordinate(random));
+        double best = INFINITY;
+        for (const auto& t : mesh.triangles)
+            best = std::min(
+                best,
+                (closestPointOnTriangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]) - p)
+                    .squaredNorm());
+        const ClosestPointTree::Hit hit = tree.closestPoint(p);
+        EXPECT_EQ(hit.squaredDistance, best);
+        EXPECT_NEAR((hit.point - p).squaredNorm(), hit.squaredDistance, 1e-12);
+    }
+}
+
+TEST(ClosestPointTree, NormalFilterKeepsPointsOnTheirSide) {
+    // A thin slab 0.02 thick: a point just above the bottom face, with an upward normal (the
+    // top face's side), must land on the top face, not on the nearer bottom face.
+    TriangleMesh slab = makeBox(Eigen::Vector3d(1.0, 1.0, 0.01));
+    const ClosestPointTree tree(slab);
+    const Eigen::Vector3d p(0.3, 0.2, -0.009);
+    EXPECT_NEAR(tree.closestPoint(p).point.z(), -0.01, 1e-15);
+    EXPECT_NEAR(tree.closestPoint(p, Eigen::Vector3d::UnitZ(), 0.0).point.z(), 0.01, 1e-15);
+}
+
+TEST(SurfaceDistance, ConcentricSpheres) {
+    const TriangleMesh inner = makeGeodesicSphere(1.0, 16), outer = makeGeodesicSphere(1.1, 16);
+    // Same triangulation scaled: the distance is 0.1 at the vertices and a little more at the
+    // face centres of the outer mesh (which are inside its sphere by the chord depth).
+    const double d = hausdorffDistance(inner, outer);
+    EXPECT_GT(d, 0.1 - 1e-12);
+    EXPECT_LT(d, 0.1 + 0.005);
+    EXPECT_NEAR(hausdorffDistance(inner, inner), 0.0, 1e-12);
+}
+
+TEST(HalfEdgeMesh, EditsKeepAClosedManifold) {
+    HalfEdgeMesh mesh(makeGeodesicSphere(1.0, 8));
+    const int chi = 2;
+    std::mt19937 random(3);
+    int splits = 0, flips = 0, collapses = 0;
+    for (int step = 0; step < 3000; ++step) {
+        const int h = std::uniform_int_distribution<int>(0, mesh.halfedgeSlots() - 1)(random);
+        if (!mesh.halfedgeAlive(h)) continue;
+        switch (step % 3) {
+            case 0:
+                mesh.splitEdge(h, 0.5 * (mesh.position(mesh.origin(h)) + mesh.position(mesh.target(h))));
+                ++splits;
+                break;
+            case 1:
+                if (mesh.flipKeepsManifold(h)) {
+                    mesh.flipEdge(h);
+                    ++flips;
+                }
+                break;
+            default:
+                if (mesh.collapseKeepsManifold(h)) {
+                    mesh.collapseEdge(h, mesh.position(mesh.target(h)));
+                    ++collapses;
+                }
+        }
+        if (step % 500 == 0) mesh.compact();
+    }
+    EXPECT_GT(splits, 500);
+    EXPECT_GT(flips, 500);
+    EXPECT_GT(collapses, 500);
+    const TriangleMesh out = mesh.toTriangleMesh("edited");
+    const MeshDefects d = inspectMesh(out);
+    EXPECT_EQ(d.boundaryEdges + d.nonManifoldEdges + d.nonManifoldVertices + d.inconsistentEdges, 0)
+        << d.describe();
+    EXPECT_EQ(eulerCharacteristic(out), chi);
+    EXPECT_EQ(static_cast<int>(out.triangles.size()), mesh.faceCount());
+    EXPECT_EQ(static_cast<int>(out.vertices.size()), mesh.vertexCount());
+}
+
+TEST(HalfEdgeMesh, LinkConditionStopsTetrahedronCollapse) {
+    TriangleMesh tetra;
+    tetra.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    tetra.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    const HalfEdgeMesh mesh(tetra);
+    for (int h = 0; h < mesh.halfedgeSlots(); ++h) {
+        EXPECT_FALSE(mesh.collapseKeepsManifold(h));
+        EXPECT_FALSE(mesh.flipKeepsManifold(h));  // the new edge would duplicate an existing one
+    }
+}
