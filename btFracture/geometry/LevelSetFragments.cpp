@@ -51,6 +51,36 @@ struct Component {
     Coord firstVoxel;  // first active voxel in tree order (deterministic tie-break)
 };
 
+// Extends the fragment labels two voxels outward through the voxels just outside the surface
+// (never into a crack slab), so that each partially filled surface voxel belongs to exactly one
+// fragment and probes that land beside the surface find their side. Each ring reads the previous
+// one; a voxel touching several fragments takes the lowest label (deterministic).
+void labelSurfaceShell(Int32Grid& labels, const LevelSetBody::Impl& body) {
+    const float shell = 2.0f * static_cast<float>(body.voxelSize);
+    auto objectAcc = body.object->getConstAccessor();
+    auto crackAcc = body.crack->getConstAccessor();
+    std::vector<Coord> candidates;
+    for (auto it = body.object->cbeginValueOn(); it; ++it)
+        if (*it >= 0.0f && *it < shell && !(crackAcc.getValue(it.getCoord()) < 0.0f))
+            candidates.push_back(it.getCoord());
+    auto labelAcc = labels.getAccessor();
+    std::vector<std::pair<Coord, int>> found;
+    for (int ring = 0; ring < 2; ++ring) {
+        found.clear();
+        for (const Coord& ijk : candidates) {
+            if (labelAcc.getValue(ijk) >= 0) continue;
+            int label = -1;
+            for (const Coord& d : {Coord(1, 0, 0), Coord(-1, 0, 0), Coord(0, 1, 0), Coord(0, -1, 0),
+                                   Coord(0, 0, 1), Coord(0, 0, -1)}) {
+                const int l = labelAcc.getValue(ijk + d);
+                if (l >= 0 && (label < 0 || l < label)) label = l;
+            }
+            if (label >= 0) found.emplace_back(ijk, label);
+        }
+        for (const auto& [ijk, label] : found) labelAcc.setValueOn(ijk, label);
+    }
+}
+
 }  // namespace
 
 std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) const {
@@ -96,6 +126,7 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
         for (int k = 0; k < static_cast<int>(components.size()); ++k)
             for (auto it = components[k].mask->cbeginValueOn(); it; ++it) acc.setValueOn(it.getCoord(), k);
     }
+    labelSurfaceShell(*labels, body);
 
     // 2. Crack voxels with the fragments on either side of their sheet.
     std::vector<CrackVoxel> crackVoxels;
@@ -157,8 +188,12 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
             const Coord ijk = it.getCoord();
             const float o = objectAcc.getValue(ijk);
             const int label = labelAcc.getValue(ijk);
-            // Inside another fragment: outside this one (crack voxels below refine this).
-            assign(ijk, label == k || o >= 0.0f ? o : background);
+            // In (or beside) another fragment: outside this one (crack voxels below refine this).
+            if (label == k || (label < 0 && o >= 0.0f)) {
+                assign(ijk, o);
+            } else {
+                assign(ijk, background);
+            }
         }
         // Crack voxels: surface on the sheet where the crack separates, filled where it ends inside.
         std::set<int> incomplete;
