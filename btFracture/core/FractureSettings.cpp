@@ -20,7 +20,7 @@ FractureMethod fractureMethodFromString(const std::string& text) {
     if (text == "full") return FractureMethod::Full;
     if (text == "est" || text == "estimated") return FractureMethod::Estimated;
     if (text == "hybrid") return FractureMethod::Hybrid;
-    throw Error("unknown fracture method '" + text + "'; expected full, est or hybrid");
+    throw Error("expected \"full\", \"est\" or \"hybrid\", got \"" + text + "\"");
 }
 
 void FractureSettings::validate() const {
