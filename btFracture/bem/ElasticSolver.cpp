@@ -100,7 +100,10 @@ Eigen::VectorXd ElasticSolver::displacements(const Eigen::VectorXd& q) const {
             << "); remove them first (paper Eq. 6, balanceTractions)";
         throw Error(msg.str());
     }
-    const Eigen::VectorXd f = operators_.tractionToLoad * q;
+    return displacementsFromLoad(operators_.tractionToLoad * q);
+}
+
+Eigen::VectorXd ElasticSolver::displacementsFromLoad(const Eigen::VectorXd& f) const {
     const Eigen::VectorXd rhs = operators_.stiffness.transpose() * f;
     Eigen::VectorXd u = solveRegularised(rhs);
     // Residual of K_R u = K^T f, formed without K_R.

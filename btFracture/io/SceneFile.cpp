@@ -32,22 +32,12 @@ const char* toString(SceneMeshCollision collision) {
     return collision == SceneMeshCollision::GImpact ? "gimpact" : "convex_hull";
 }
 
-const char* methodWord(FractureMethod method) {
-    switch (method) {
-        case FractureMethod::Full:
-            return "full";
-        case FractureMethod::Estimated:
-            return "est";
-        case FractureMethod::Hybrid:
-            return "hybrid";
-    }
-    return "?";
-}
-
 FractureMethod parseFractureMethod(const std::string& word, const std::string& what) {
-    for (FractureMethod m : {FractureMethod::Full, FractureMethod::Estimated, FractureMethod::Hybrid})
-        if (word == methodWord(m)) return m;
-    throw Error(what + ": expected \"full\", \"est\" or \"hybrid\", got \"" + word + "\"");
+    try {
+        return fractureMethodFromString(word);
+    } catch (const Error& e) {
+        throw Error(what + ": " + e.what());
+    }
 }
 
 const char* toString(SceneMotion motion) {
@@ -310,7 +300,7 @@ private:
         if (value.contains("hybrid_threshold")) {
             if (f.method != FractureMethod::Hybrid)
                 fail(child(path, "hybrid_threshold"),
-                     std::string("applies to method \"hybrid\" only (method is \"") + methodWord(f.method) +
+                     std::string("applies to method \"hybrid\" only (method is \"") + toString(f.method) +
                          "\")");
             f.hybridElementThreshold = integer(value["hybrid_threshold"], child(path, "hybrid_threshold"), 1);
         }

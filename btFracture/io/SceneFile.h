@@ -45,9 +45,8 @@ struct SceneShape {
     double offset = 0.0;  // Plane: points x with normal . x = offset [m]
 };
 
-// Scene spelling of the fracture method: "full", "est" or "hybrid" (paper §3, §4, Fig. 7).
-const char* methodWord(FractureMethod method);
-// Parses that spelling; throws btfracture::Error naming `what` and the accepted words.
+// Parses the scene spelling of a fracture method ("full", "est", "hybrid"; core/FractureSettings.h);
+// throws btfracture::Error naming `what` and the accepted words.
 FractureMethod parseFractureMethod(const std::string& word, const std::string& what);
 
 // Random spatial variation of strength and toughness: value(x) = value * (1 + amplitude * n(x))

@@ -45,7 +45,7 @@ void StatisticsCsv::add(const FractureEventRecord& r) {
     std::string names;
     for (const std::string& name : r.fragments) names += (names.empty() ? "" : " ") + name;
     out_ << ++rows_ << ',' << r.step << ',' << number(r.time) << ',' << csvField(r.body) << ',' << r.contacts
-         << ',' << number(r.impulse) << ',' << number(r.contactDuration) << ',' << methodWord(r.method) << ','
+         << ',' << number(r.impulse) << ',' << number(r.contactDuration) << ',' << toString(r.method) << ','
          << r.bemTriangles << ',' << r.crackTriangles << ',' << r.fragments.size() << ',' << csvField(names)
          << ',' << number(r.fractureSeconds) << ',' << number(r.swapSeconds) << '\n';
     out_.flush();
