@@ -42,6 +42,22 @@ Eigen::Vector3d CrackMesh::normal(int t) const {
 
 double CrackMesh::sheetArea(int t) const { return sheetAreas_[sheetOfTriangle_[t]]; }
 
+CrackMesh CrackMesh::extractSheets(const std::vector<int>& sheets, const Eigen::Vector3d& shift) const {
+    CrackMesh out;
+    std::vector<int> newIndex(nodes_.size(), -1);
+    for (int t = 0; t < triangleCount(); ++t) {
+        if (std::find(sheets.begin(), sheets.end(), sheetOfTriangle_[t]) == sheets.end()) continue;
+        std::array<int, 3> tri;
+        for (int k = 0; k < 3; ++k) {
+            int& index = newIndex[triangles_[t][k]];
+            if (index < 0) index = out.addNode(nodes_[triangles_[t][k]] + shift);
+            tri[k] = index;
+        }
+        out.addTriangle(tri[0], tri[1], tri[2]);
+    }
+    return out;
+}
+
 Panel CrackMesh::panel(int t, int idOffset) const {
     const auto& tri = triangles_[t];
     return Panel{{tri[0] + idOffset, tri[1] + idOffset, tri[2] + idOffset},

@@ -42,6 +42,13 @@ public:
     const std::vector<FrontEdge>& frontEdges() const { return frontEdges_; }
     // Total area [m^2] of the sheet containing triangle t (the EST's crack area A, §4.2).
     double sheetArea(int t) const;
+    // Sheets are the edge-connected components, numbered by their lowest triangle (as of the last
+    // refreshUnknowns()).
+    int sheetOf(int t) const { return sheetOfTriangle_[t]; }
+    int sheetCount() const { return static_cast<int>(sheetAreas_.size()); }
+    // A new crack mesh with just the given sheets, every node moved by `shift` [m] (carrying
+    // incomplete cracks into a fragment's own frame, §5.3). No unknowns are numbered yet.
+    CrackMesh extractSheets(const std::vector<int>& sheets, const Eigen::Vector3d& shift) const;
 
     // The operator sees a crack as extra boundary with normal -n_c and density COD (see
     // FORMULATION.md); node ids are offset by `idOffset` so they never match surface nodes.

@@ -1,7 +1,9 @@
 #pragma once
 // Test scenes for the Bullet coupling: a ground box, a fracturable glass slab resting on it and
-// a steel ball thrown down at it, in a btFractureDynamicsWorld with the plane-split engine.
+// a steel ball thrown down at it, in a btFractureDynamicsWorld with the plane-split engine (or
+// the physical BemFractureEngine).
 #include <btFracture/core/Material.h>
+#include <btFracture/dynamics/BemFractureEngine.h>
 #include <btFracture/dynamics/PlaneSplitFractureEngine.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
@@ -24,6 +26,7 @@ struct SceneOptions {
     double ballX = 0.05, ballZ = 0.03;  // where the ball hits the slab's top face [m]
     int maxRefractureDepth = 2;
     bool withEngine = true;
+    bool physicalEngine = false;  // BemFractureEngine instead of the plane-split stand-in
     Eigen::Vector3d slabHalfExtents = Eigen::Vector3d(0.2, 0.025, 0.2);  // [m]
     // Free flight: no gravity, the slab lifted 0.5 m off the ground, moving and spinning.
     bool freeFlight = false;
@@ -73,7 +76,10 @@ public:
         world = std::make_unique<btFractureDynamicsWorld>(&dispatcher, &broadphase, &solver, &config);
         world->setGravity(btVector3(0, options.freeFlight ? btScalar(0) : btScalar(-9.81), 0));
         const double lift = options.freeFlight ? 0.5 : 0.0;
-        if (options.withEngine) world->setFractureEngine(std::make_unique<PlaneSplitFractureEngine>());
+        if (options.withEngine && options.physicalEngine)
+            world->setFractureEngine(std::make_unique<BemFractureEngine>());
+        else if (options.withEngine)
+            world->setFractureEngine(std::make_unique<PlaneSplitFractureEngine>());
 
         btTransform t;
         t.setIdentity();
