@@ -579,7 +579,7 @@ Json parseJson(const std::string& text, const std::string& source) {
     };
     try {
         return Json::parse(text, callback);
-    } catch (const Json::parse_error& e) {
+    } catch (const Json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
         std::string message = e.what();
         const size_t bracket = message.find("] ");
         if (message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)

@@ -4,6 +4,7 @@
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
+#include <btFracture/core/Primitives.h>
 #include <btFracture/io/MeshReader.h>
 
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
@@ -13,7 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 namespace btfracture {
 namespace {
@@ -37,51 +37,6 @@ Eigen::Isometry3d fromBullet(const btTransform& t) {
         for (int j = 0; j < 3; ++j) pose.linear()(i, j) = r[i][j];
     pose.translation() = Eigen::Vector3d(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
     return pose;
-}
-
-// Display and output surfaces of the primitive shapes.
-TriangleMesh boxSurface(const Eigen::Vector3d& halfExtents) {
-    TriangleMesh m;
-    for (int i = 0; i < 8; ++i)
-        m.vertices.push_back(
-            halfExtents.cwiseProduct(Eigen::Vector3d(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1)));
-    const int quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
-                             {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-    for (const auto& q : quads) {
-        m.triangles.push_back({q[0], q[1], q[2]});
-        m.triangles.push_back({q[0], q[2], q[3]});
-    }
-    return m;
-}
-
-// Icosahedron subdivided `levels` times, vertices on the sphere.
-TriangleMesh sphereSurface(double radius, int levels) {
-    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-    TriangleMesh m;
-    m.vertices = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
-                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
-    m.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                   {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-    for (int level = 0; level < levels; ++level) {
-        std::map<std::pair<int, int>, int> midpoints;
-        auto midpoint = [&](int a, int b) {
-            const auto key = std::minmax(a, b);
-            const auto found = midpoints.find(key);
-            if (found != midpoints.end()) return found->second;
-            m.vertices.push_back(0.5 * (m.vertices[a] + m.vertices[b]));
-            return midpoints[key] = static_cast<int>(m.vertices.size()) - 1;
-        };
-        std::vector<std::array<int, 3>> finer;
-        for (const auto& tri : m.triangles) {
-            const int ab = midpoint(tri[0], tri[1]), bc = midpoint(tri[1], tri[2]),
-                      ca = midpoint(tri[2], tri[0]);
-            finer.insert(finer.end(), {{tri[0], ab, ca}, {ab, tri[1], bc}, {ca, bc, tri[2]}, {ab, bc, ca}});
-        }
-        m.triangles = std::move(finer);
-    }
-    for (auto& v : m.vertices) v = radius * v.normalized();
-    return m;
 }
 
 constexpr double kPlaneDisplayHalfSize = 10.0;  // [m]
@@ -239,7 +194,7 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
         case SceneShapeType::Box: {
             const Eigen::Vector3d h = shape.halfExtents.cwiseProduct(description.scale);
             storage.shape = std::make_unique<btBoxShape>(toBullet(h));
-            body.surface = boxSurface(h);
+            body.surface = makeBox(h);
             body.volume = 8.0 * h.prod();
             const Eigen::Vector3d h2 = h.cwiseProduct(h);
             unitDensityInertia =
@@ -249,7 +204,7 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
         case SceneShapeType::Sphere: {
             const double r = shape.radius * description.scale.x();
             storage.shape = std::make_unique<btSphereShape>(static_cast<btScalar>(r));
-            body.surface = sphereSurface(r, 3);
+            body.surface = makeGeodesicSphere(r, 8);  // 1280 triangles
             body.volume = 4.0 / 3.0 * M_PI * r * r * r;
             unitDensityInertia = Eigen::Vector3d::Constant(0.4 * body.volume * r * r);
             break;

@@ -1,7 +1,7 @@
 #pragma once
-// The statistics CSV: one row per fracture event. The fracture world's listener fills a
-// FractureEventRecord per event and hands it to FractureRecorder (io/FractureRecorder.h), which
-// names the fragments and calls StatisticsCsv::add.
+// The statistics CSV: one row per fracture event. The fracture world's listener
+// (io/FractureRecorderListener.h) fills a FractureEventRecord per event and hands it to
+// FractureRecorder (io/FractureRecorder.h), which names the fragments and calls StatisticsCsv::add.
 #include <btFracture/io/SceneFile.h>
 
 #include <cstdint>
@@ -20,7 +20,7 @@ struct FractureEventRecord {
     // Hertz contact duration t_c that turned impulses into tractions (§5.1); the longest over the
     // contacts [s].
     double contactDuration = 0.0;
-    // The method that ran (a hybrid body reports the one it used at this event: full or est).
+    // The body's fracture method.
     FractureMethod method = FractureMethod::Full;
     int bemTriangles = 0;                // BEM surface mesh of the body
     int crackTriangles = 0;              // crack-sheet triangles at the end of the event

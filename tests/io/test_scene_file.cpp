@@ -333,6 +333,10 @@ TEST(SceneFile, MissingFilesAndBrokenJson) {
 
     const std::string syntax = errorOf("{\"bodies\": [\n  {\"shape\": }\n]}");
     EXPECT_TRUE(contains(syntax, "test.json: invalid JSON: parse error at line 2, column 13")) << syntax;
+    // nlohmann reports numbers beyond double range as out_of_range, not parse_error (a fuzzing find).
+    const std::string overflow =
+        errorOf(R"({"world": {"dt": 1e999}, "bodies": [{"shape": {"type": "plane"}}]})");
+    EXPECT_TRUE(contains(overflow, "test.json: invalid JSON: number overflow parsing '1e999'")) << overflow;
     EXPECT_TRUE(
         contains(errorOf(R"({"world": {"dt": 0.1, "dt": 0.2}, "bodies": [{"shape": {"type": "plane"}}]})"),
                  "test.json: duplicate key \"dt\""));
