@@ -5,7 +5,9 @@ JOBS      ?= $(shell nproc)
 CMAKE_ARGS ?=
 SCENE     ?= demos/scenes/column_bunny.json
 
-.PHONY: all deps configure build demo test bench bench-accuracy test-sanitize format format-check clean
+FUZZ_BUILD ?= $(BUILD)-fuzz
+
+.PHONY: all deps configure build demo test bench bench-accuracy test-sanitize fuzz-build fuzz-short fuzz-long format format-check clean
 
 all: build
 
@@ -33,6 +35,20 @@ test-sanitize: deps
 	@cmake --build $(BUILD)-sanitize -j $(JOBS)
 	ctest --test-dir $(BUILD)-sanitize --output-on-failure -j $(JOBS)
 
+# Fuzzing needs clang (libFuzzer), so it has its own build tree and is not part of `make test`;
+# `make test` replays the seed corpus and every past crash input (CTest fuzz.replay_*).
+fuzz-build:
+	@scripts/install-deps.sh fuzz
+	@cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+	  -DBTFRACTURE_FUZZ=ON -DBTFRACTURE_BUILD_TESTS=OFF -DBTFRACTURE_BUILD_DEMOS=OFF -DBTFRACTURE_BUILD_BENCH=OFF > /dev/null
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_targets
+
+fuzz-short: fuzz-build
+	@scripts/run-fuzz.sh $(FUZZ_BUILD) short
+
+fuzz-long: fuzz-build
+	@scripts/run-fuzz.sh $(FUZZ_BUILD) long
+
 format:
 	@scripts/format.sh fix
 
@@ -40,4 +56,4 @@ format-check:
 	@scripts/format.sh check
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-sanitize $(OUT)
+	rm -rf $(BUILD) $(BUILD)-sanitize $(FUZZ_BUILD) $(OUT)

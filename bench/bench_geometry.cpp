@@ -64,10 +64,12 @@ int main() {
     double sum = 0.0;
     for (const Fragment& f : fragments) {
         sum += f.mass.volume;
-        std::printf("  %-12s %6.2f %% of original, %-20s surface %7zu, collision %5zu, hull %4zu triangles\n",
-                    f.name.c_str(), 100 * f.fractionOfOriginal, fragmentClassName(f.volumeClass),
-                    f.surfaceMesh.triangles.size(), f.collisionMesh.triangles.size(),
-                    f.convexHull.triangles.size());
+        std::printf(
+            "  %-12s %6.2f %% of original, %-20s surface %7zu, collision %5zu, hull %4zu triangles, "
+            "%zu incomplete crack(s)\n",
+            f.name.c_str(), 100 * f.fractionOfOriginal, fragmentClassName(f.volumeClass),
+            f.surfaceMesh.triangles.size(), f.collisionMesh.triangles.size(), f.convexHull.triangles.size(),
+            f.incompleteCracks.size());
     }
     std::printf("fragment volumes sum to %+.4f %% of the uncut level set\n",
                 100 * (sum / body.massProperties().volume - 1));

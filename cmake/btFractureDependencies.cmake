@@ -4,7 +4,8 @@
 # In:  BTFRACTURE_BULLET_DOUBLE (ON: Debian's *-float64 Bullet + BT_USE_DOUBLE_PRECISION)
 # Out: btFracture::Bullet        INTERFACE: Bullet headers (SYSTEM), core libraries, precision define
 #      btFracture::BulletExtras  INTERFACE: BulletWorldImporter, BulletFileLoader, GIMPACTUtils, HACD
-#      Eigen3::Eigen, ccd, TBB::tbb, Boost::boost, OpenVDB::openvdb, nlohmann_json::nlohmann_json
+#      Eigen3::Eigen, ccd, TBB::tbb, Boost::boost, OpenVDB::openvdb, nlohmann_json::nlohmann_json,
+#      PNG::PNG (libpng: the runner's preview images)
 include_guard(GLOBAL)
 
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
@@ -13,6 +14,7 @@ find_package(TBB REQUIRED)
 find_package(Boost REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(OpenMP REQUIRED COMPONENTS CXX)
+find_package(PNG REQUIRED)
 
 # OpenVDB ships only a Find module, in its own cmake folder.
 if(NOT TARGET OpenVDB::openvdb)

@@ -1,6 +1,11 @@
 # Strict warnings for btFracture's own targets only; dependencies come in as SYSTEM headers.
+# The fuzz build (clang) reports warnings without failing: the project's -Werror gate is GCC's.
 function(btfracture_strict_warnings target)
-  target_compile_options(${target} PRIVATE -Wall -Wextra -Werror)
+  if(BTFRACTURE_FUZZ)
+    target_compile_options(${target} PRIVATE -Wall -Wextra)
+  else()
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Werror)
+  endif()
   # GCC 12 reports false "may be used uninitialized" inside avx512fintrin.h when Eigen is
   # inlined with -march=native on AVX-512 machines (GCC bug 105593); keep it a warning.
   if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")

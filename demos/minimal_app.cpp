@@ -2,11 +2,11 @@
 // ground, one breakable glass slab and a steel ball thrown at it. Compared with plain Bullet it
 // changes three things, marked (1) (2) (3).
 //
-// (2) uses PlaneSplitFractureEngine, a stand-in that cuts the body in two through the impact
-// point, until the BEM fracture engine lands; switching is that one line.
+// (2) is the physical engine (BEM stress, cracks, level-set fragments); tests use a plane-split
+// stand-in through the same one line.
 //
 // Exit status: 0 when the slab broke, 1 otherwise (it runs as the CTest test coupling.minimal_app).
-#include <btFracture/dynamics/PlaneSplitFractureEngine.h>
+#include <btFracture/dynamics/BemFractureEngine.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 
@@ -26,7 +26,7 @@ int main() {
     btFractureDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
     world.setGravity(btVector3(0, -9.81f, 0));
     // (2) who decides how things break
-    world.setFractureEngine(std::make_unique<PlaneSplitFractureEngine>());
+    world.setFractureEngine(std::make_unique<BemFractureEngine>());
 
     btBoxShape groundShape(btVector3(5, 0.5f, 5));
     btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &groundShape));

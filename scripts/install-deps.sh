@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages btFracture needs, but only those that are missing, and says
 # which. Runs apt-get as root, or through sudo when available.
+#   install-deps.sh        what the build, tests, demos and benchmarks need
+#   install-deps.sh fuzz   plus clang, its libFuzzer runtime and OpenMP (make fuzz-short / fuzz-long)
 set -euo pipefail
 
 packages=(
@@ -9,6 +11,9 @@ packages=(
   libopenvdb-dev libtbb-dev libboost-dev libboost-iostreams-dev
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libpng-dev
 )
+if [ "${1:-}" = fuzz ]; then
+  packages+=(clang libclang-rt-14-dev libomp-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -69,9 +69,9 @@ ElasticSolver::ElasticSolver(SurfaceMesh mesh, const Material& material, const E
              rcond_, "); results may be inaccurate");
 }
 
-NetLoad ElasticSolver::netLoad(const Eigen::VectorXd& q) const {
+TractionResultant ElasticSolver::netLoad(const Eigen::VectorXd& q) const {
     const Eigen::Matrix<double, 6, 1> load = netLoadOperator_ * q;
-    NetLoad net{load.head<3>(), load.tail<3>(), 0.0};
+    TractionResultant net{load.head<3>(), load.tail<3>(), 0.0};
     double magnitude = 0.0;
     for (int t = 0; t < mesh_.triangleCount(); ++t) magnitude += mesh_.area(t) * q.segment<3>(3 * t).norm();
     if (magnitude > 0.0) net.relative = std::max(net.force.norm(), net.torque.norm() / mesh_.radius()) / magnitude;
@@ -92,7 +92,7 @@ Eigen::VectorXd ElasticSolver::displacements(const Eigen::VectorXd& q) const {
         throw Error(msg.str());
     }
     if (!q.allFinite()) throw Error("ElasticSolver::displacements: tractions contain NaN or Inf");
-    const NetLoad net = netLoad(q);
+    const TractionResultant net = netLoad(q);
     if (net.relative > settings_.balanceTolerance) {
         std::ostringstream msg;
         msg << "tractions are not free of net force and torque (|F| = " << net.force.norm()
@@ -100,7 +100,10 @@ Eigen::VectorXd ElasticSolver::displacements(const Eigen::VectorXd& q) const {
             << "); remove them first (paper Eq. 6, balanceTractions)";
         throw Error(msg.str());
     }
-    const Eigen::VectorXd f = operators_.tractionToLoad * q;
+    return displacementsFromLoad(operators_.tractionToLoad * q);
+}
+
+Eigen::VectorXd ElasticSolver::displacementsFromLoad(const Eigen::VectorXd& f) const {
     const Eigen::VectorXd rhs = operators_.stiffness.transpose() * f;
     Eigen::VectorXd u = solveRegularised(rhs);
     // Residual of K_R u = K^T f, formed without K_R.

@@ -17,7 +17,7 @@ struct ElasticSolverSettings {
     double balanceTolerance = 1e-8;
 };
 
-struct NetLoad {
+struct TractionResultant {
     Eigen::Vector3d force;   // int q dx [N]
     Eigen::Vector3d torque;  // int x x q dx about the centre of mass [N m]
     double relative;         // max(|force|, |torque| / radius) / int |q| dx
@@ -37,15 +37,20 @@ public:
 
     const SurfaceMesh& mesh() const { return mesh_; }
     const Material& material() const { return material_; }
+    const ElasticSolverSettings& settings() const { return settings_; }
 
     // Nodal displacements u (3n, [m], node-major) for P0 tractions q (3m, [Pa], triangle-major,
-    // body frame). Throws if q carries net force or torque (see NetLoad).
+    // body frame). Throws if q carries net force or torque (see TractionResultant).
     Eigen::VectorXd displacements(const Eigen::VectorXd& tractions) const;
+
+    // u = K_R^-1 K^T f for a load vector f (3n) that is already free of rigid-mode work (F q of
+    // balanced tractions, possibly corrected by crack terms, §4.3). Checks the residual.
+    Eigen::VectorXd displacementsFromLoad(const Eigen::VectorXd& load) const;
 
     // K_R^-1 B for any right-hand sides B (3n x k); used by the crack Schur complement.
     Eigen::MatrixXd solveRegularised(const Eigen::MatrixXd& rhs) const;
 
-    NetLoad netLoad(const Eigen::VectorXd& tractions) const;
+    TractionResultant netLoad(const Eigen::VectorXd& tractions) const;
 
     const Eigen::MatrixXd& stiffness() const { return operators_.stiffness; }
     const BoundaryOperators& operators() const { return operators_; }

@@ -76,6 +76,11 @@ StressEvaluator::StressEvaluator(const SurfaceMesh& mesh, double E, double nu, c
                                  const Eigen::VectorXd& q, const StressEvaluationSettings& settings)
     : mesh_(mesh), E_(E), nu_(nu), u_(u), q_(q), settings_(settings), surface_(surfaceStresses(mesh, E, nu, u, q)) {}
 
+void StressEvaluator::addCracks(const CrackMesh& cracks, const Eigen::VectorXd& nodalOpenings) {
+    cracks_ = &cracks;
+    openings_ = &nodalOpenings;
+}
+
 StressEvaluator::Nearest StressEvaluator::nearestTriangle(const Eigen::Vector3d& x) const {
     Nearest best{-1, std::numeric_limits<double>::infinity(), x};
     for (int t = 0; t < mesh_.triangleCount(); ++t) {
@@ -96,6 +101,15 @@ Eigen::Matrix3d StressEvaluator::interiorStress(const Eigen::Vector3d& x) const 
                       mesh_.area(t)};
         integrateAdaptive(x, s, mesh_.normal(t), q_.segment<3>(3 * t), E_, nu_, settings_, 0, sigma);
     }
+    if (cracks_)
+        for (int t = 0; t < cracks_->triangleCount(); ++t) {
+            const auto& tri = cracks_->triangle(t);
+            const Eigen::VectorXd& cod = *openings_;
+            SubTriangle s{{cracks_->node(tri[0]), cracks_->node(tri[1]), cracks_->node(tri[2])},
+                          {cod.segment<3>(3 * tri[0]), cod.segment<3>(3 * tri[1]), cod.segment<3>(3 * tri[2])},
+                          cracks_->area(t)};
+            integrateAdaptive(x, s, -cracks_->normal(t), Eigen::Vector3d::Zero(), E_, nu_, settings_, 0, sigma);
+        }
     sigma.triangularView<Eigen::StrictlyLower>() = sigma.transpose().triangularView<Eigen::StrictlyLower>();
     return sigma;
 }

@@ -3,6 +3,7 @@
 // Somigliana stress identity with the Kelvin kernels S1 (tractions) and S2 (displacements),
 // handed over smoothly to the surface stress (Eq. 5) near the boundary, where the interior
 // integral loses accuracy.
+#include <btFracture/bem/CrackMesh.h>
 #include <btFracture/bem/SurfaceMesh.h>
 
 #include <Eigen/Core>
@@ -30,6 +31,11 @@ public:
                     const Eigen::VectorXd& displacements, const Eigen::VectorXd& tractions,
                     const StressEvaluationSettings& settings = {});
 
+    // Includes traction-free cracks with the given openings (COD per crack node, 3 each, zero on
+    // the front) in the interior stress: a crack acts as boundary with normal -n_c and
+    // displacement COD (FORMULATION.md). Keeps references.
+    void addCracks(const CrackMesh& cracks, const Eigen::VectorXd& nodalOpenings);
+
     // Blended stress at x [m, body frame]: interior Eq. 7 away from the surface, Eq. 5 on it.
     Eigen::Matrix3d stressAt(const Eigen::Vector3d& x) const;
     // Eq. 7 alone (diverges as x approaches the surface). x must be inside the body.
@@ -51,6 +57,8 @@ private:
     const Eigen::VectorXd& q_;
     StressEvaluationSettings settings_;
     std::vector<Eigen::Matrix3d> surface_;
+    const CrackMesh* cracks_ = nullptr;
+    const Eigen::VectorXd* openings_ = nullptr;
 };
 
 }  // namespace btfracture

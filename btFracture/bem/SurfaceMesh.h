@@ -4,6 +4,7 @@
 #include <btFracture/core/TriangleMesh.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <array>
 #include <vector>

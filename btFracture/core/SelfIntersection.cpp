@@ -291,6 +291,9 @@ std::vector<std::pair<int, int>> findSelfIntersections(const TriangleMesh& mesh)
     for (int t = 0; t < nt; ++t) {
         const auto& tri = mesh.triangles[t];
         if (std::any_of(tri.begin(), tri.end(), [nv](int i) { return i < 0 || i >= nv; })) continue;
+        // A repeated corner is degenerate whatever its coordinates; the area test below alone
+        // misses it when the compiler fuses (b - a) x (c - a) into FMAs (found by fuzzing).
+        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
         const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
         if (!a.allFinite() || !b.allFinite() || !c.allFinite()) continue;
         triangles[t] = makeTriangle(a, b, c);

@@ -7,18 +7,6 @@
 
 namespace btfracture {
 
-const char* toString(FractureMethod method) {
-    switch (method) {
-        case FractureMethod::Full:
-            return "FULL";
-        case FractureMethod::Estimated:
-            return "EST";
-        case FractureMethod::Hybrid:
-            return "HYBRID";
-    }
-    return "?";
-}
-
 void validate(const FractureBodySettings& s, const std::string& body) {
     std::ostringstream problem;
     if (!(s.impulseThreshold >= 0.0) || !std::isfinite(s.impulseThreshold))

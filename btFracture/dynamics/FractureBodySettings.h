@@ -1,17 +1,11 @@
 #pragma once
 // Per-body fracture settings of a btFractureRigidBody (SI units).
+#include <btFracture/core/FractureSettings.h>
 #include <btFracture/dynamics/CollisionShapeBuilder.h>
 
 #include <string>
 
 namespace btfracture {
-
-// How the fracture engine computes stress intensity factors (paper §3, §4, Fig. 7).
-enum class FractureMethod {
-    Full,       // FULL: crack unknowns in the BEM system (Eq. 4)
-    Estimated,  // EST: one crack-free solve, SIFs from interior stress (§4.2, §4.3)
-    Hybrid,     // HYBRID: FULL until the BEM mesh has more than hybridElementThreshold elements
-};
 
 struct FractureBodySettings {
     bool fracturable = true;  // false: a plain Bullet body, the world's hook never looks at it
@@ -36,7 +30,5 @@ struct FractureBodySettings {
 
 // Throws btfracture::Error naming `body` and the offending field when a value is out of range.
 void validate(const FractureBodySettings& settings, const std::string& body);
-
-const char* toString(FractureMethod method);
 
 }  // namespace btfracture

@@ -51,6 +51,36 @@ struct Component {
     Coord firstVoxel;  // first active voxel in tree order (deterministic tie-break)
 };
 
+// Extends the fragment labels two voxels outward through the voxels just outside the surface
+// (never into a crack slab), so that each partially filled surface voxel belongs to exactly one
+// fragment and probes that land beside the surface find their side. Each ring reads the previous
+// one; a voxel touching several fragments takes the lowest label (deterministic).
+void labelSurfaceShell(Int32Grid& labels, const LevelSetBody::Impl& body) {
+    const float shell = 2.0f * static_cast<float>(body.voxelSize);
+    auto objectAcc = body.object->getConstAccessor();
+    auto crackAcc = body.crack->getConstAccessor();
+    std::vector<Coord> candidates;
+    for (auto it = body.object->cbeginValueOn(); it; ++it)
+        if (*it >= 0.0f && *it < shell && !(crackAcc.getValue(it.getCoord()) < 0.0f))
+            candidates.push_back(it.getCoord());
+    auto labelAcc = labels.getAccessor();
+    std::vector<std::pair<Coord, int>> found;
+    for (int ring = 0; ring < 2; ++ring) {
+        found.clear();
+        for (const Coord& ijk : candidates) {
+            if (labelAcc.getValue(ijk) >= 0) continue;
+            int label = -1;
+            for (const Coord& d : {Coord(1, 0, 0), Coord(-1, 0, 0), Coord(0, 1, 0), Coord(0, -1, 0),
+                                   Coord(0, 0, 1), Coord(0, 0, -1)}) {
+                const int l = labelAcc.getValue(ijk + d);
+                if (l >= 0 && (label < 0 || l < label)) label = l;
+            }
+            if (label >= 0) found.emplace_back(ijk, label);
+        }
+        for (const auto& [ijk, label] : found) labelAcc.setValueOn(ijk, label);
+    }
+}
+
 }  // namespace
 
 std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) const {
@@ -96,6 +126,7 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
         for (int k = 0; k < static_cast<int>(components.size()); ++k)
             for (auto it = components[k].mask->cbeginValueOn(); it; ++it) acc.setValueOn(it.getCoord(), k);
     }
+    labelSurfaceShell(*labels, body);
 
     // 2. Crack voxels with the fragments on either side of their sheet.
     std::vector<CrackVoxel> crackVoxels;
@@ -157,25 +188,24 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
             const Coord ijk = it.getCoord();
             const float o = objectAcc.getValue(ijk);
             const int label = labelAcc.getValue(ijk);
-            // Inside another fragment: outside this one (crack voxels below refine this).
-            assign(ijk, label == k || o >= 0.0f ? o : background);
+            // In (or beside) another fragment: outside this one (crack voxels below refine this).
+            if (label == k || (label < 0 && o >= 0.0f)) {
+                assign(ijk, o);
+            } else {
+                assign(ijk, background);
+            }
         }
         // Crack voxels: surface on the sheet where the crack separates, filled where it ends inside.
         std::set<int> incomplete;
-        FloatGrid::Ptr keptCrack = makeLevelSet(dx);
-        Int32Grid::Ptr keptTriangle = Int32Grid::create(-1);
-        keptTriangle->setTransform(phi->transformPtr());
-        auto keptCrackAcc = keptCrack->getAccessor();
-        auto keptTriangleAcc = keptTriangle->getAccessor();
+        std::vector<int> filled;
         for (int i : crackVoxelsOf[k]) {
             const CrackVoxel& v = crackVoxels[i];
             const float solid = solidAcc.getValue(v.ijk);
             if (v.plus == k && v.minus == k) {
                 assign(v.ijk, solid);
-                const float slab = crackAcc.getValue(v.ijk);
-                keptCrackAcc.setValueOn(v.ijk, slab);
-                keptTriangleAcc.setValueOn(v.ijk, v.triangle);
-                if (slab < 0.0f && solid < 0.0f) incomplete.insert(body.crackTriangles[v.triangle].crackId);
+                filled.push_back(i);
+                if (crackAcc.getValue(v.ijk) < 0.0f && solid < 0.0f)
+                    incomplete.insert(body.crackTriangles[v.triangle].crackId);
             } else {
                 const double side = v.plus == k ? -v.signedDistance : v.signedDistance;
                 assign(v.ijk, std::max(solid, static_cast<float>(side)));
@@ -206,7 +236,15 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
         }
         f.collisionMesh =
             collisionMeshFromGrid(*phi, settings.collisionTriangles, f.name + " (collision)", &surface);
-        f.convexHull = convexHullMesh(surface.vertices, f.name + " (convex hull)");
+        try {
+            f.convexHull = convexHullMesh(surface.vertices, f.name + " (convex hull)");
+        } catch (const Error& e) {  // a flat sliver: no volume to collide with
+            logf(LogLevel::Warning, f.name, ": fragment of ", f.mass.volume, " m^3 has no convex hull (",
+                 e.what(), "); dropped");
+            dustVolume += f.mass.volume;
+            ++dustCount;
+            continue;
+        }
 
         // The fragment as a body of its own, with its incomplete cracks still cut into it.
         auto child = std::make_unique<Impl>();
@@ -214,21 +252,27 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
         child->voxelSize = dx;
         child->originalVolume = body.originalVolume;
         child->solid = phi;
-        child->crack = keptCrack;
-        child->crackTriangle = keptTriangle;
-        if (!incomplete.empty()) {
-            // Keep only the triangles the kept crack voxels refer to, renumbered in order.
+        // Its crack grid: the narrow band of the incomplete cracks inside it, triangles renumbered.
+        child->crack = makeLevelSet(dx);
+        child->crackTriangle = Int32Grid::create(-1);
+        child->crackTriangle->setTransform(phi->transformPtr());
+        {
+            auto childCrackAcc = child->crack->getAccessor();
+            auto childTriangleAcc = child->crackTriangle->getAccessor();
             std::map<int, int> renumber;
-            for (auto it = keptTriangle->tree().beginValueOn(); it; ++it) renumber.emplace(*it, 0);
+            for (int i : filled)
+                if (incomplete.count(body.crackTriangles[crackVoxels[i].triangle].crackId))
+                    renumber.emplace(crackVoxels[i].triangle, 0);
             for (auto& [old, fresh] : renumber) {
                 fresh = static_cast<int>(child->crackTriangles.size());
                 child->crackTriangles.push_back(body.crackTriangles[old]);
             }
-            for (auto it = keptTriangle->tree().beginValueOn(); it; ++it) it.setValue(renumber[*it]);
-        } else {
-            child->crack = makeLevelSet(dx);
-            child->crackTriangle = Int32Grid::create(-1);
-            child->crackTriangle->setTransform(phi->transformPtr());
+            for (int i : filled) {
+                const auto it = renumber.find(crackVoxels[i].triangle);
+                if (it == renumber.end()) continue;
+                childCrackAcc.setValueOn(crackVoxels[i].ijk, crackAcc.getValue(crackVoxels[i].ijk));
+                childTriangleAcc.setValueOn(crackVoxels[i].ijk, it->second);
+            }
         }
         child->mass = f.mass;
         child->rebuildObject();

@@ -32,6 +32,31 @@ const char* toString(SceneMeshCollision collision) {
     return collision == SceneMeshCollision::GImpact ? "gimpact" : "convex_hull";
 }
 
+FractureMethod parseFractureMethod(const std::string& word, const std::string& what) {
+    try {
+        return fractureMethodFromString(word);
+    } catch (const Error& e) {
+        throw Error(what + ": " + e.what());
+    }
+}
+
+const char* toString(SceneMotion motion) {
+    switch (motion) {
+        case SceneMotion::Dynamic:
+            return "dynamic";
+        case SceneMotion::Sleeping:
+            return "sleeping";
+        case SceneMotion::Kinematic:
+            return "kinematic";
+    }
+    return "?";
+}
+
+void overrideFractureMethod(Scene& scene, FractureMethod method) {
+    for (SceneBody& body : scene.bodies)
+        if (body.fracture.fracturable) body.fracture.method = method;
+}
+
 namespace {
 
 using Json = nlohmann::json;
@@ -58,7 +83,7 @@ public:
     Scene parse(const Json& root) {
         Scene scene;
         requireObject(root, "", "the scene (a JSON object)");
-        allowOnly(root, "", {"description", "world", "bodies", "outputs"});
+        allowOnly(root, "", {"description", "world", "bodies", "outputs", "effects"});
         if (root.contains("description")) text(root["description"], "description");
         if (root.contains("world")) scene.world = world(root["world"], "world");
         if (!root.contains("bodies")) fail("bodies", "missing; expected an array of bodies");
@@ -74,6 +99,7 @@ public:
             scene.bodies.push_back(std::move(b));
         }
         if (root.contains("outputs")) scene.outputs = outputs(root["outputs"], "outputs");
+        if (root.contains("effects")) effects(root["effects"], "effects", scene);
         return scene;
     }
 
@@ -110,12 +136,37 @@ private:
         return x;
     }
 
-    int integer(const Json& value, const std::string& path, int minimum) const {
-        const std::string expected = "an integer >= " + std::to_string(minimum);
+    int integer(const Json& value, const std::string& path, int minimum, int maximum = 1000000000) const {
+        const std::string expected = maximum < 1000000000 ? "an integer in [" + std::to_string(minimum) +
+                                                                ", " + std::to_string(maximum) + "]"
+                                                          : "an integer >= " + std::to_string(minimum);
         if (!value.is_number_integer() || value.get<long long>() < minimum ||
-            value.get<long long>() > 1000000000LL)
+            value.get<long long>() > maximum)
             fail(path, "expected " + expected + ", got " + shown(value));
         return static_cast<int>(value.get<long long>());
+    }
+
+    std::uint64_t seed(const Json& value, const std::string& path) const {
+        if (!value.is_number_unsigned() && !(value.is_number_integer() && value.get<long long>() >= 0))
+            fail(path, "expected an integer seed >= 0, got " + shown(value));
+        return value.get<std::uint64_t>();
+    }
+
+    // One of `words` (the enum's spellings), as its index.
+    size_t choice(const Json& value, const std::string& path,
+                  std::initializer_list<const char*> words) const {
+        std::string expected;
+        size_t k = 0;
+        for (const char* w : words)
+            expected += std::string(k++ == 0 ? "" : k == words.size() ? " or " : ", ") + "\"" + w + "\"";
+        if (value.is_string()) {
+            k = 0;
+            for (const char* w : words) {
+                if (value.get<std::string>() == w) return k;
+                ++k;
+            }
+        }
+        fail(path, "expected " + expected + ", got " + shown(value));
     }
 
     Eigen::Vector3d vector3(const Json& value, const std::string& path, const std::string& unit) const {
@@ -150,7 +201,7 @@ private:
 
     SceneOutputs outputs(const Json& value, const std::string& path) const {
         requireObject(value, path, "an object");
-        allowOnly(value, path, {"directory", "obj_every_n_steps"});
+        allowOnly(value, path, {"directory", "obj_every_n_steps", "png_every_n_steps", "image"});
         SceneOutputs o;
         if (value.contains("directory")) {
             o.directory = text(value["directory"], child(path, "directory"));
@@ -158,7 +209,137 @@ private:
         }
         if (value.contains("obj_every_n_steps"))
             o.objEveryNSteps = integer(value["obj_every_n_steps"], child(path, "obj_every_n_steps"), 0);
+        if (value.contains("png_every_n_steps"))
+            o.pngEveryNSteps = integer(value["png_every_n_steps"], child(path, "png_every_n_steps"), 0);
+        if (value.contains("image")) o.image = image(value["image"], child(path, "image"));
         return o;
+    }
+
+    RenderSettings image(const Json& value, const std::string& path) const {
+        requireObject(value, path, "an object");
+        allowOnly(value, path, {"width", "height", "projection", "shading", "view", "supersampling"});
+        RenderSettings m;
+        if (value.contains("width")) m.width = integer(value["width"], child(path, "width"), 16, 8192);
+        if (value.contains("height")) m.height = integer(value["height"], child(path, "height"), 16, 8192);
+        if (value.contains("projection"))
+            m.projection = static_cast<Projection>(
+                choice(value["projection"], child(path, "projection"), {"perspective", "orthographic"}));
+        if (value.contains("shading"))
+            m.shading =
+                static_cast<Shading>(choice(value["shading"], child(path, "shading"), {"gouraud", "flat"}));
+        if (value.contains("supersampling"))
+            m.supersampling = integer(value["supersampling"], child(path, "supersampling"), 1, 4);
+        if (value.contains("view")) {
+            m.view = vector3(value["view"], child(path, "view"), "");
+            if (!(m.view.norm() > 1e-12))
+                fail(child(path, "view"), "expected a non-zero direction, got " + shown(value["view"]));
+        }
+        return m;
+    }
+
+    // effects: output formats, the run seed and the per-body fracture settings (after the bodies).
+    void effects(const Json& value, const std::string& path, Scene& scene) const {
+        requireObject(value, path, "an object");
+        allowOnly(value, path, {"outputs", "seed", "fracture"});
+        if (value.contains("outputs")) {
+            const Json& list = value["outputs"];
+            const std::string lpath = child(path, "outputs");
+            if (!list.is_array())
+                fail(lpath, "expected an array of \"obj\", \"vdb\", \"csv\", \"png\", got " + shown(list));
+            SceneOutputFormats f;
+            f.obj = false;
+            std::set<size_t> seen;
+            for (size_t i = 0; i < list.size(); ++i) {
+                const size_t k = choice(list[i], element(lpath, i), {"obj", "vdb", "csv", "png"});
+                if (!seen.insert(k).second) fail(element(lpath, i), "listed twice: " + shown(list[i]));
+                (k == 0 ? f.obj : k == 1 ? f.vdb : k == 2 ? f.csv : f.png) = true;
+            }
+            scene.effects.outputs = f;
+        }
+        if (value.contains("seed")) scene.effects.seed = seed(value["seed"], child(path, "seed"));
+        if (value.contains("fracture")) {
+            const Json& fracture = value["fracture"];
+            const std::string fpath = child(path, "fracture");
+            requireObject(fracture, fpath, "an object {\"<body name>\": true | false | {...}, ...}");
+            for (const auto& item : fracture.items()) {
+                const std::string bpath = child(fpath, item.key());
+                auto body = std::find_if(scene.bodies.begin(), scene.bodies.end(),
+                                         [&](const SceneBody& b) { return b.name == item.key(); });
+                if (body == scene.bodies.end()) {
+                    std::string names;
+                    for (const SceneBody& b : scene.bodies) names += (names.empty() ? "" : ", ") + b.name;
+                    fail(bpath, "no body named '" + item.key() + "' (bodies: " + names + ")");
+                }
+                bodyFracture(item.value(), bpath, *body);
+                if (body->fracture.fracturable &&
+                    (body->isStatic() || body->motion == SceneMotion::Kinematic))
+                    fail(bpath, "body '" + body->name + "' is " +
+                                    (body->isStatic() ? "static" : "kinematic") +
+                                    " and cannot break (only dynamic bodies break)");
+            }
+        }
+    }
+
+    // effects.fracture.<name>: fills body.fracture (keeping the resolutions) and body.materialNoise.
+    void bodyFracture(const Json& value, const std::string& path, SceneBody& body) const {
+        FractureBodySettings& f = body.fracture;
+        if (value.is_boolean()) {
+            f.fracturable = value.get<bool>();
+            return;
+        }
+        requireObject(
+            value, path,
+            "true, false or an object {method, hybrid_threshold, refracture_depth, impulse_threshold, "
+            "material_noise}");
+        allowOnly(value, path,
+                  {"method", "hybrid_threshold", "refracture_depth", "impulse_threshold", "material_noise"});
+        f.fracturable = true;
+        if (value.contains("method"))
+            f.method = parseFractureMethod(text(value["method"], child(path, "method")),
+                                           source_ + ": " + child(path, "method"));
+        if (value.contains("hybrid_threshold")) {
+            if (f.method != FractureMethod::Hybrid)
+                fail(child(path, "hybrid_threshold"),
+                     std::string("applies to method \"hybrid\" only (method is \"") + toString(f.method) +
+                         "\")");
+            f.hybridElementThreshold = integer(value["hybrid_threshold"], child(path, "hybrid_threshold"), 1);
+        }
+        if (value.contains("refracture_depth"))
+            f.maxRefractureDepth = integer(value["refracture_depth"], child(path, "refracture_depth"), 0, 20);
+        if (value.contains("impulse_threshold"))
+            f.impulseThreshold =
+                positive(value["impulse_threshold"], child(path, "impulse_threshold"), "N s");
+        if (value.contains("material_noise")) {
+            const Json& noise = value["material_noise"];
+            const std::string npath = child(path, "material_noise");
+            requireObject(noise, npath, "an object {\"amplitude\": a, \"seed\": s}");
+            allowOnly(noise, npath, {"amplitude", "seed"});
+            if (!noise.contains("amplitude"))
+                fail(child(npath, "amplitude"), "missing; expected a number in [0, 1)");
+            SceneMaterialNoise& n = body.materialNoise;
+            n.amplitude = number(noise["amplitude"], child(npath, "amplitude"), "a number in [0, 1)");
+            if (!(n.amplitude >= 0.0 && n.amplitude < 1.0))
+                fail(child(npath, "amplitude"),
+                     "expected a number in [0, 1), got " + shown(noise["amplitude"]));
+            if (noise.contains("seed")) n.seed = seed(noise["seed"], child(npath, "seed"));
+        }
+    }
+
+    // A body's "resolution": the three resolution fields of its fracture settings.
+    void resolution(const Json& value, const std::string& path, FractureBodySettings& r) const {
+        requireObject(value, path, "an object {bem_triangles, collision_triangles, voxel_size}");
+        allowOnly(value, path, {"bem_triangles", "collision_triangles", "voxel_size"});
+        if (value.contains("bem_triangles"))
+            r.bemTriangleTarget = integer(value["bem_triangles"], child(path, "bem_triangles"), 4);
+        if (value.contains("collision_triangles"))
+            r.collisionTriangleTarget =
+                integer(value["collision_triangles"], child(path, "collision_triangles"), 4);
+        if (value.contains("voxel_size"))
+            r.voxelSize = positive(value["voxel_size"], child(path, "voxel_size"), "m");
+        if (r.collisionTriangleTarget < r.bemTriangleTarget)
+            fail(path, "collision_triangles (" + std::to_string(r.collisionTriangleTarget) +
+                           ") must be >= bem_triangles (" + std::to_string(r.bemTriangleTarget) +
+                           "): the BEM mesh is the coarsest resolution");
     }
 
     SceneShape shape(const Json& value, const std::string& path) const {
@@ -301,7 +482,7 @@ private:
         requireObject(value, path, "a body object");
         allowOnly(value, path,
                   {"name", "shape", "scale", "position", "orientation", "linear_velocity", "angular_velocity",
-                   "density", "mass", "material", "fracturable"});
+                   "density", "mass", "material", "state", "friction", "restitution", "resolution"});
         SceneBody b;
         b.name = value.contains("name") ? text(value["name"], child(path, "name"))
                                         : "body" + std::to_string(index);
@@ -314,8 +495,8 @@ private:
         b.shape = shape(value["shape"], child(path, "shape"));
 
         if (b.shape.type == SceneShapeType::Plane)
-            for (const char* key :
-                 {"scale", "position", "orientation", "linear_velocity", "angular_velocity", "density"})
+            for (const char* key : {"scale", "position", "orientation", "linear_velocity", "angular_velocity",
+                                    "density", "state", "resolution"})
                 if (value.contains(key))
                     fail(child(path, key),
                          "not allowed for a plane (a plane is static and placed by its normal and offset)");
@@ -339,8 +520,27 @@ private:
             b.angularVelocity = vector3(value["angular_velocity"], child(path, "angular_velocity"), "rad/s");
         if (value.contains("material"))
             b.material = material(value["material"], child(path, "material"), b.name);
-        if (value.contains("fracturable"))
-            b.fracturable = boolean(value["fracturable"], child(path, "fracturable"));
+        if (value.contains("friction")) {
+            b.friction = number(value["friction"], child(path, "friction"), "a number >= 0");
+            if (b.friction < 0.0)
+                fail(child(path, "friction"), "expected a number >= 0, got " + shown(value["friction"]));
+        }
+        if (value.contains("restitution")) {
+            b.restitution = number(value["restitution"], child(path, "restitution"), "a number in [0, 1]");
+            if (!(b.restitution >= 0.0 && b.restitution <= 1.0))
+                fail(child(path, "restitution"),
+                     "expected a number in [0, 1], got " + shown(value["restitution"]));
+        }
+        if (value.contains("resolution"))
+            resolution(value["resolution"], child(path, "resolution"), b.fracture);
+        if (value.contains("state")) {
+            b.motion = static_cast<SceneMotion>(
+                choice(value["state"], child(path, "state"), {"dynamic", "sleeping", "kinematic"}));
+            if (b.motion == SceneMotion::Kinematic)
+                for (const char* key : {"mass", "density"})
+                    if (value.contains(key))
+                        fail(child(path, key), "not allowed for a kinematic body (it has infinite mass)");
+        }
 
         if (value.contains("density") && value.contains("mass"))
             fail(path, "give either \"density\" or \"mass\", not both");
@@ -356,7 +556,10 @@ private:
             b.mass = mass;
         }
         if (b.isStatic() && (b.linearVelocity.squaredNorm() > 0.0 || b.angularVelocity.squaredNorm() > 0.0))
-            fail(path, "a static body (mass 0 or plane) cannot have a velocity");
+            fail(path,
+                 "a static body (mass 0 or plane) cannot have a velocity; use \"state\": \"kinematic\"");
+        if (b.isStatic() && b.motion == SceneMotion::Sleeping)
+            fail(child(path, "state"), "a static body (mass 0) cannot be \"sleeping\"");
         return b;
     }
 
@@ -376,7 +579,7 @@ Json parseJson(const std::string& text, const std::string& source) {
     };
     try {
         return Json::parse(text, callback);
-    } catch (const Json::parse_error& e) {
+    } catch (const Json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
         std::string message = e.what();
         const size_t bracket = message.find("] ");
         if (message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)

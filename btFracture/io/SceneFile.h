@@ -5,10 +5,15 @@
 //   column_bunny.json: bodies[2].shape.radius: expected a positive number [m], got -0.2
 // Unknown keys are errors too, so that a typo never silently falls back to a default.
 #include <btFracture/core/Material.h>
+#include <btFracture/core/TriangleMesh.h>
+#include <btFracture/dynamics/FractureBodySettings.h>
+#include <btFracture/io/RenderSettings.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,12 +35,39 @@ const char* toString(SceneMeshCollision collision);
 struct SceneShape {
     SceneShapeType type = SceneShapeType::Box;
     std::string meshFile;  // Mesh: path of the .obj/.ply (relative paths resolved against the scene's folder)
+    // Mesh given in memory instead of a file (FractureRB .bullet import), in the shape's own
+    // frame; SceneWorld validates it like a file's mesh. Used when set; meshFile is then empty.
+    std::shared_ptr<const TriangleMesh> meshData;
     SceneMeshCollision collision = SceneMeshCollision::ConvexHull;  // Mesh
     Eigen::Vector3d halfExtents{0.5, 0.5, 0.5};                     // Box [m], before scale
     double radius = 0.5;                                            // Sphere [m], before scale
     Eigen::Vector3d normal{0.0, 1.0, 0.0};                          // Plane: unit normal, world frame
     double offset = 0.0;  // Plane: points x with normal . x = offset [m]
 };
+
+// Parses the scene spelling of a fracture method ("full", "est", "hybrid"; core/FractureSettings.h);
+// throws btfracture::Error naming `what` and the accepted words.
+FractureMethod parseFractureMethod(const std::string& word, const std::string& what);
+
+// Random spatial variation of strength and toughness: value(x) = value * (1 + amplitude * n(x))
+// with smooth noise n in [-1, 1]; seed picks the realisation (combined with SceneEffects::seed).
+struct SceneMaterialNoise {
+    double amplitude = 0.0;  // [-], in [0, 1); 0 = homogeneous
+    std::uint64_t seed = 0;
+};
+
+// A body's fracture settings as the scene gives them: dynamics' FractureBodySettings (what a
+// btFractureRigidBody takes), except that nothing breaks unless the effects section says so.
+inline FractureBodySettings unbreakable() {
+    FractureBodySettings s;
+    s.fracturable = false;
+    return s;
+}
+
+// How a body moves: dynamic; dynamic but asleep until something touches it; kinematic (moves at
+// its constant linear and angular velocity, pushes others, feels nothing).
+enum class SceneMotion { Dynamic, Sleeping, Kinematic };
+const char* toString(SceneMotion motion);
 
 struct SceneBody {
     std::string name;  // unique, no whitespace; names the body in messages and output files
@@ -50,15 +82,48 @@ struct SceneBody {
     std::optional<double> mass;  // [kg]
     double density = 0.0;        // [kg/m^3]: the body's "density", else the material's
     Material material = Material::steel();
-    bool fracturable = false;  // stored for the fracture issues; the rigid runner ignores it
+    SceneMotion motion = SceneMotion::Dynamic;
+    double friction = 0.5;     // Bullet's friction coefficient [-]
+    double restitution = 0.0;  // Bullet's restitution [-]
+    // From effects.fracture.<name> (fracturable, method, hybridElementThreshold,
+    // impulseThreshold, maxRefractureDepth) and the body's "resolution" (bemTriangleTarget,
+    // collisionTriangleTarget, voxelSize).
+    FractureBodySettings fracture = unbreakable();
+    SceneMaterialNoise materialNoise;  // effects.fracture.<name>.material_noise
 
-    bool isStatic() const { return shape.type == SceneShapeType::Plane || (mass && *mass == 0.0); }
+    // Never moves: a plane or mass 0 (kinematic bodies move, so they are not static).
+    bool isStatic() const {
+        return motion != SceneMotion::Kinematic &&
+               (shape.type == SceneShapeType::Plane || (mass && *mass == 0.0));
+    }
 };
 
 struct SceneOutputs {
     std::string
         directory;  // empty: the runner's choice (out/<scene name>); relative to the working directory
     int objEveryNSteps = 10;  // one OBJ frame every n steps (and the first and last); 0 = none
+    int pngEveryNSteps = 10;  // one PNG frame every n steps (and the first and last); 0 = none
+    RenderSettings image;     // PNG frames
+};
+
+// What a run produces (scene key effects.outputs).
+struct SceneOutputFormats {
+    bool obj = true;   // per-frame OBJ, one object per body
+    bool vdb = false;  // fractured level sets (needs fracture)
+    bool csv = false;  // statistics.csv (one row per fracture event) and the fragment-volume histogram
+    bool png = false;  // preview frames, contact sheet, histogram plot
+};
+
+struct SceneEffects {
+    SceneOutputFormats outputs;
+    // Run seed, combined with every body's noise seed; --seed overrides it. Runs with the same
+    // seed give the same output.
+    std::uint64_t seed = 0;
+};
+
+// Settings of one run that do not belong to the scene file (command line).
+struct SceneRunSettings {
+    int threads = 0;  // worker threads for OpenMP and TBB; 0 = the libraries' default
 };
 
 struct Scene {
@@ -67,7 +132,12 @@ struct Scene {
     SceneWorldSettings world;
     std::vector<SceneBody> bodies;
     SceneOutputs outputs;
+    SceneEffects effects;
+    SceneRunSettings run;
 };
+
+// Sets the method of every breakable body (the runner's --method).
+void overrideFractureMethod(Scene& scene, FractureMethod method);
 
 // Reads and validates a scene file; mesh paths are resolved against its folder and must exist.
 Scene readSceneFile(const std::string& path);

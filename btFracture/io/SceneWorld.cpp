@@ -3,6 +3,8 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
+#include <btFracture/core/MeshCheck.h>
+#include <btFracture/core/Primitives.h>
 #include <btFracture/io/MeshReader.h>
 
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
@@ -12,7 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 namespace btfracture {
 namespace {
@@ -36,51 +37,6 @@ Eigen::Isometry3d fromBullet(const btTransform& t) {
         for (int j = 0; j < 3; ++j) pose.linear()(i, j) = r[i][j];
     pose.translation() = Eigen::Vector3d(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
     return pose;
-}
-
-// Display and output surfaces of the primitive shapes.
-TriangleMesh boxSurface(const Eigen::Vector3d& halfExtents) {
-    TriangleMesh m;
-    for (int i = 0; i < 8; ++i)
-        m.vertices.push_back(
-            halfExtents.cwiseProduct(Eigen::Vector3d(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1)));
-    const int quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
-                             {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-    for (const auto& q : quads) {
-        m.triangles.push_back({q[0], q[1], q[2]});
-        m.triangles.push_back({q[0], q[2], q[3]});
-    }
-    return m;
-}
-
-// Icosahedron subdivided `levels` times, vertices on the sphere.
-TriangleMesh sphereSurface(double radius, int levels) {
-    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-    TriangleMesh m;
-    m.vertices = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
-                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
-    m.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                   {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-    for (int level = 0; level < levels; ++level) {
-        std::map<std::pair<int, int>, int> midpoints;
-        auto midpoint = [&](int a, int b) {
-            const auto key = std::minmax(a, b);
-            const auto found = midpoints.find(key);
-            if (found != midpoints.end()) return found->second;
-            m.vertices.push_back(0.5 * (m.vertices[a] + m.vertices[b]));
-            return midpoints[key] = static_cast<int>(m.vertices.size()) - 1;
-        };
-        std::vector<std::array<int, 3>> finer;
-        for (const auto& tri : m.triangles) {
-            const int ab = midpoint(tri[0], tri[1]), bc = midpoint(tri[1], tri[2]),
-                      ca = midpoint(tri[2], tri[0]);
-            finer.insert(finer.end(), {{tri[0], ab, ca}, {ab, tri[1], bc}, {ca, bc, tri[2]}, {ab, bc, ca}});
-        }
-        m.triangles = std::move(finer);
-    }
-    for (auto& v : m.vertices) v = radius * v.normalized();
-    return m;
 }
 
 constexpr double kPlaneDisplayHalfSize = 10.0;  // [m]
@@ -137,7 +93,16 @@ struct SceneWorld::Impl {
     std::vector<ShapeStorage> shapes;  // parallel to bodies
     std::vector<std::unique_ptr<btRigidBody>> ownedBodies;
     std::vector<Body> bodies;
+    // Kinematic bodies: start pose and constant velocities, so that poses come from the elapsed
+    // time without accumulating rounding.
+    struct Kinematic {
+        btRigidBody* body;
+        btTransform start;
+        btVector3 linearVelocity, angularVelocity;
+    };
+    std::vector<Kinematic> kinematic;
     int frames = 0;
+    long long bulletSteps = 0;
 
     ~Impl() {
         // Bodies leave the world before anything they reference goes away; then the world goes
@@ -171,7 +136,12 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
             MassProperties mass;
             PrincipalAxes axes;
             try {
-                mesh = readMesh(shape.meshFile);
+                if (shape.meshData) {
+                    mesh = *shape.meshData;
+                    requireClosedSolid(mesh);
+                } else {
+                    mesh = readMesh(shape.meshFile);
+                }
                 for (auto& v : mesh.vertices) v = v.cwiseProduct(description.scale);
                 mass = computeMassProperties(mesh);
                 axes = principalAxes(mass.inertiaPerDensity);
@@ -194,8 +164,7 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
                                                     static_cast<int>(mesh.vertices.size()),
                                                     static_cast<btScalar>(margin), btScalar(0.25));
                 if (!(shift > 0) || hull.vertices.size() < 4)
-                    throw Error(bodyContext(scene, description) + ": convex hull of '" + shape.meshFile +
-                                "' failed");
+                    throw Error(bodyContext(scene, description) + ": convex hull of its mesh failed");
                 if (shift < 0.999 * margin)
                     logf(LogLevel::Info, bodyContext(scene, description), ": hull shrink limited to ", shift,
                          " m (margin ", margin, " m) by the hull's thickness");
@@ -225,7 +194,7 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
         case SceneShapeType::Box: {
             const Eigen::Vector3d h = shape.halfExtents.cwiseProduct(description.scale);
             storage.shape = std::make_unique<btBoxShape>(toBullet(h));
-            body.surface = boxSurface(h);
+            body.surface = makeBox(h);
             body.volume = 8.0 * h.prod();
             const Eigen::Vector3d h2 = h.cwiseProduct(h);
             unitDensityInertia =
@@ -235,7 +204,7 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
         case SceneShapeType::Sphere: {
             const double r = shape.radius * description.scale.x();
             storage.shape = std::make_unique<btSphereShape>(static_cast<btScalar>(r));
-            body.surface = sphereSurface(r, 3);
+            body.surface = makeGeodesicSphere(r, 8);  // 1280 triangles
             body.volume = 4.0 / 3.0 * M_PI * r * r * r;
             unitDensityInertia = Eigen::Vector3d::Constant(0.4 * body.volume * r * r);
             break;
@@ -249,7 +218,7 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
     body.surface.name = description.name;
 
     double mass = 0.0;
-    if (!description.isStatic())
+    if (!description.isStatic() && description.motion != SceneMotion::Kinematic)
         mass = description.mass ? *description.mass : description.density * body.volume;
     const Eigen::Vector3d inertia = body.volume > 0.0
                                         ? Eigen::Vector3d(mass / body.volume * unitDensityInertia)
@@ -265,7 +234,16 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
     if (!rigidBody) throw Error(bodyContext(scene, description) + ": the scene factory created no body");
     rigidBody->setLinearVelocity(toBullet(description.linearVelocity));
     rigidBody->setAngularVelocity(toBullet(description.angularVelocity));
+    rigidBody->setFriction(static_cast<btScalar>(description.friction));
+    rigidBody->setRestitution(static_cast<btScalar>(description.restitution));
+    if (description.motion == SceneMotion::Kinematic) {
+        rigidBody->setCollisionFlags(rigidBody->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+        rigidBody->setActivationState(DISABLE_DEACTIVATION);
+        kinematic.push_back({rigidBody.get(), rigidBody->getWorldTransform(), rigidBody->getLinearVelocity(),
+                             rigidBody->getAngularVelocity()});
+    }
     world->addRigidBody(rigidBody.get());
+    if (description.motion == SceneMotion::Sleeping) rigidBody->setActivationState(ISLAND_SLEEPING);
     body.rigidBody = rigidBody.get();
     ownedBodies.push_back(std::move(rigidBody));
     shapes.push_back(std::move(storage));
@@ -304,7 +282,22 @@ void SceneWorld::stepFrame() {
     const btScalar h = static_cast<btScalar>(settings.dt / settings.substeps);
     // maxSubSteps = 0: exactly one internal step of h per call, with no accumulator that could
     // round to one step more or less.
-    for (int k = 0; k < settings.substeps; ++k) impl_->world->stepSimulation(h, 0);
+    for (int k = 0; k < settings.substeps; ++k) {
+        // Kinematic bodies move at their constant velocities: pose at the end of this step, from
+        // the start pose and the elapsed time. Bullet derives the velocity the contact solver
+        // sees from the change of transform (btRigidBody::saveKinematicState).
+        const double t = static_cast<double>(++impl_->bulletSteps) * settings.dt / settings.substeps;
+        for (const Impl::Kinematic& kin : impl_->kinematic) {
+            btTransform pose = kin.start;
+            pose.setOrigin(kin.start.getOrigin() + kin.linearVelocity * static_cast<btScalar>(t));
+            const btScalar speed = kin.angularVelocity.length();
+            if (speed > btScalar(0))
+                pose.setRotation(btQuaternion(kin.angularVelocity / speed, speed * static_cast<btScalar>(t)) *
+                                 kin.start.getRotation());
+            kin.body->setCenterOfMassTransform(pose);
+        }
+        impl_->world->stepSimulation(h, 0);
+    }
     ++impl_->frames;
 }
 

@@ -13,6 +13,11 @@
 // GImpact gives a btGImpactMeshShape over all triangles, with btGImpactCollisionAlgorithm
 // registered on the dispatcher. Margin: min(0.04 m, 0.02 * cube root of the body volume).
 //
+// Motion: a "sleeping" body starts deactivated (ISLAND_SLEEPING) until something touches it; a
+// "kinematic" body (CF_KINEMATIC_OBJECT, infinite mass) is moved by stepFrame at its constant
+// linear and angular velocity before each Bullet step. Friction and restitution come from the
+// scene.
+//
 // Extension point: SceneWorldFactory is the one place where the world and the bodies are
 // created, so that btFracture's own btFractureDynamicsWorld / btFractureRigidBody can be built
 // from the same scene by overriding it. SceneWorld owns everything it creates.
@@ -44,7 +49,9 @@ public:
                                                                  const Scene& scene) const;
     // One body. `info` carries the shape, mass, principal inertia and start transform (centre of
     // mass frame); `surface` is the body's closed surface mesh in that frame (a display square for
-    // planes). SceneWorld sets the velocities and adds the body to the world afterwards.
+    // planes); `description` has the material, resolutions and fracture settings
+    // (description.fracture: dynamics' FractureBodySettings, fracturable or not). SceneWorld sets the
+    // velocities, friction, restitution and motion state and adds the body to the world afterwards.
     virtual std::unique_ptr<btRigidBody> createBody(const btRigidBody::btRigidBodyConstructionInfo& info,
                                                     const SceneBody& description,
                                                     const TriangleMesh& surface) const;

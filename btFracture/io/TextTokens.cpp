@@ -34,7 +34,7 @@ bool LineReader::next(std::string_view& line) {
     if (end == std::string_view::npos) end = text_.size();
     line = text_.substr(position_, end - position_);
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    position_ = end + 1;
+    position_ = end < text_.size() ? end + 1 : text_.size();  // a last line without '\n' ends the text
     ++lineNumber_;
     return true;
 }

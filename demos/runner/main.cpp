@@ -1,50 +1,132 @@
-// btfracture-run: the headless runner. Reads a JSON scene (demos/README.md), simulates it in
-// Bullet and writes OBJ frames (one object per body) plus a short summary.
+// btfracture-run: the headless runner. Reads a JSON scene (demos/README.md) or a FractureRB
+// .bullet + CSV pair, simulates it and writes the outputs the scene asks for (OBJ and PNG frames,
+// a contact sheet, fracture statistics), then prints a summary table.
 //
-// Exit codes: 0 success, 2 bad input (command line, scene, meshes, output folder), 1 internal
-// failure (anything unexpected, including a simulation that turns non-finite).
+// Exit codes (also in --help and demos/README.md):
+//   0  the run finished
+//   1  internal failure while running (unexpected exception, an output file that cannot be written)
+//   2  bad input, rejected before simulating (command line, scene, meshes, CSV, output folder)
+//   3  the simulation turned non-finite (NaN or Inf); the run stopped there, outputs so far are kept
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/ThreadLimit.h>
 #include <btFracture/core/Timer.h>
+#include <btFracture/io/ContactSheet.h>
+#include <btFracture/io/FractureRbScene.h>
+#include <btFracture/io/FractureRecorder.h>
 #include <btFracture/io/ObjWriter.h>
+#include <btFracture/io/PngFile.h>
 #include <btFracture/io/SceneFile.h>
+#include <btFracture/io/ScenePreview.h>
 #include <btFracture/io/SceneWorld.h>
 
 #include <btBulletDynamicsCommon.h>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
 using namespace btfracture;
+namespace fs = std::filesystem;
 
-const char* kUsage = "usage: btfracture-run SCENE [--out DIR] [--steps N] [--quiet] [--help]\n";
+enum ExitCode { kSuccess = 0, kInternalFailure = 1, kBadInput = 2, kNonFinite = 3 };
+
+const char* kUsage =
+    "usage: btfracture-run SCENE [options]\n"
+    "       btfracture-run --fracturerb SCENE.bullet PARAMS.csv [options]\n";
 
 const char* kHelp =
-    "Simulates a btFracture scene file headless and writes one OBJ file per output frame.\n"
+    "Simulates a btFracture scene headless and writes what the scene's effects.outputs ask for.\n"
     "\n"
-    "  SCENE        scene file (JSON; format in demos/README.md)\n"
-    "  --out DIR    output folder (default: the scene's outputs.directory, else out/<scene name>);\n"
-    "               old frame_*.obj files in it are removed first\n"
-    "  --steps N    simulate N frames instead of the scene's world.steps\n"
-    "  --quiet      print only warnings and errors, no summary\n"
-    "  --help       this text\n"
+    "  SCENE          scene file (JSON; format in demos/README.md)\n"
+    "  --fracturerb SCENE.bullet PARAMS.csv\n"
+    "                 read a FractureRB scene instead: a Bullet world file and the per-object CSV\n"
+    "                 of Hahn & Wojtan's FractureRB (';'-separated, '%' comments); time step 1/250 s,\n"
+    "                 1000 steps and outputs obj,csv,png unless overridden\n"
+    "  --out DIR      output folder (default: the scene's outputs.directory, else out/<scene name>);\n"
+    "                 outputs of an earlier run in it (frame_*.obj, frame_*.png, ...) are removed\n"
+    "  --steps N      simulate N frames instead of the scene's world.steps\n"
+    "  --method M     fracture method of every breakable body: full (BEM with crack unknowns, Eq. 4),\n"
+    "                 est (SIF estimator, paper section 4.2) or hybrid (full until the body's\n"
+    "                 hybrid_threshold BEM elements, then est); default: each body's effects entry\n"
+    "  --seed S       run seed (integer >= 0), combined with every body's material-noise seed;\n"
+    "                 default: the scene's effects.seed (0). Same seed, same results.\n"
+    "  --threads T    worker threads for OpenMP and TBB (0 = all cores, the default); results do\n"
+    "                 not depend on it\n"
+    "  --outputs L    comma-separated subset of obj,vdb,csv,png, or none; replaces effects.outputs\n"
+    "  --quiet        print only warnings and errors: no progress, no summary\n"
+    "  --help         this text\n"
     "\n"
-    "Output: DIR/frame_00000.obj, ... every outputs.obj_every_n_steps frames (and the first and\n"
-    "last), one object per body named after it, in world coordinates.\n"
-    "Exit status: 0 success, 2 bad input (scene, mesh, options), 1 internal failure.\n";
+    "Progress goes to stderr: a bar on a terminal, a line every 10 % otherwise. The summary table\n"
+    "(steps, fracture events, fragments, rigid-body and fracture time, peak memory, outputs) goes\n"
+    "to stdout.\n"
+    "\n"
+    "Outputs in DIR: frame_NNNNN.obj (one object per body, every outputs.obj_every_n_steps),\n"
+    "frame_NNNNN.png and contact_sheet.png (every outputs.png_every_n_steps), statistics.csv (one\n"
+    "row per fracture event), fragments.csv and fragment_volumes.csv/.png (fragment volumes\n"
+    "against Mott's distribution; written when something broke).\n"
+    "\n"
+    "Exit status: 0 success, 1 internal failure while running, 2 bad input (command line, scene,\n"
+    "mesh, CSV or output folder; nothing was simulated), 3 the simulation turned non-finite (NaN or\n"
+    "Inf) and stopped (outputs up to that step are kept).\n";
 
 struct Options {
     std::string scene;
+    std::optional<std::pair<std::string, std::string>> fractureRb;  // .bullet, .csv
     std::optional<std::string> out;
     std::optional<int> steps;
+    std::optional<FractureMethod> method;
+    std::optional<std::uint64_t> seed;
+    std::optional<int> threads;
+    std::optional<SceneOutputFormats> outputs;
     bool quiet = false;
 };
+
+long long integerOption(const std::string& option, const std::string& text, long long minimum,
+                        long long maximum, const std::string& expected) {
+    char* end = nullptr;
+    errno = 0;
+    const long long value = std::strtoll(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || errno != 0 || value < minimum || value > maximum)
+        throw Error(option + " expects " + expected + ", got '" + text + "'");
+    return value;
+}
+
+SceneOutputFormats outputList(const std::string& text) {
+    SceneOutputFormats f;
+    f.obj = false;
+    if (text == "none") return f;
+    std::istringstream items(text);
+    std::string item;
+    int count = 0;
+    while (std::getline(items, item, ',')) {
+        bool* flag = item == "obj"   ? &f.obj
+                     : item == "vdb" ? &f.vdb
+                     : item == "csv" ? &f.csv
+                     : item == "png" ? &f.png
+                                     : nullptr;
+        if (!flag)
+            throw Error("--outputs: expected a comma-separated subset of obj,vdb,csv,png or none, got '" +
+                        text + "'");
+        *flag = true;
+        ++count;
+    }
+    if (count == 0)
+        throw Error("--outputs: expected a comma-separated subset of obj,vdb,csv,png or none, got ''");
+    return f;
+}
 
 // Bad command lines are input errors (exit 2).
 Options parseOptions(int argc, char** argv) {
@@ -58,17 +140,31 @@ Options parseOptions(int argc, char** argv) {
         if (arg == "--help" || arg == "-h") {
             std::fputs(kUsage, stdout);
             std::fputs(kHelp, stdout);
-            std::exit(0);
+            std::exit(kSuccess);
         } else if (arg == "--out") {
             options.out = value("--out");
             if (options.out->empty()) throw Error("--out needs a non-empty folder");
         } else if (arg == "--steps") {
-            const std::string text = value("--steps");
+            options.steps = static_cast<int>(
+                integerOption("--steps", value("--steps"), 0, 1000000000, "an integer >= 0"));
+        } else if (arg == "--method") {
+            options.method = parseFractureMethod(value("--method"), "--method");
+        } else if (arg == "--seed") {
+            const std::string text = value("--seed");
             char* end = nullptr;
-            const long steps = std::strtol(text.c_str(), &end, 10);
-            if (text.empty() || *end != '\0' || steps < 0 || steps > 1000000000L)
-                throw Error("--steps expects an integer >= 0, got '" + text + "'");
-            options.steps = static_cast<int>(steps);
+            errno = 0;
+            const unsigned long long seed = std::strtoull(text.c_str(), &end, 10);
+            if (text.empty() || text[0] == '-' || *end != '\0' || errno != 0)
+                throw Error("--seed expects an integer >= 0, got '" + text + "'");
+            options.seed = seed;
+        } else if (arg == "--threads") {
+            options.threads = static_cast<int>(integerOption("--threads", value("--threads"), 0, 1024,
+                                                             "an integer in [0, 1024] (0 = all cores)"));
+        } else if (arg == "--outputs") {
+            options.outputs = outputList(value("--outputs"));
+        } else if (arg == "--fracturerb") {
+            const std::string bullet = value("--fracturerb");
+            options.fractureRb = std::make_pair(bullet, value("--fracturerb"));
         } else if (arg == "--quiet" || arg == "-q") {
             options.quiet = true;
         } else if (!arg.empty() && arg[0] == '-') {
@@ -79,93 +175,317 @@ Options parseOptions(int argc, char** argv) {
             throw Error("more than one scene given ('" + options.scene + "', '" + arg + "')");
         }
     }
-    if (options.scene.empty()) throw Error("no scene file given");
+    if (options.fractureRb && !options.scene.empty())
+        throw Error("give either a SCENE or --fracturerb SCENE.bullet PARAMS.csv, not both");
+    if (!options.fractureRb && options.scene.empty()) throw Error("no scene file given");
     return options;
 }
 
-std::filesystem::path prepareOutput(const std::string& directory) {
-    namespace fs = std::filesystem;
+// Files a run writes; removed from the output folder first so that no stale frame survives.
+bool isRunOutput(const fs::path& file) {
+    const std::string name = file.filename().string(), ext = file.extension().string();
+    if (name.rfind("frame_", 0) == 0 && (ext == ".obj" || ext == ".png")) return true;
+    for (const char* own : {"contact_sheet.png", "statistics.csv", "fragments.csv", "fragment_volumes.csv",
+                            "fragment_volumes.png"})
+        if (name == own) return true;
+    return false;
+}
+
+fs::path prepareOutput(const std::string& directory) {
     const fs::path dir(directory);
     std::error_code error;
     fs::create_directories(dir, error);
     if (error || !fs::is_directory(dir))
-        throw Error("cannot create output folder '" + directory + "': " + error.message());
+        throw Error("cannot create output folder '" + directory + "'" +
+                    (error ? ": " + error.message() : ""));
     int removed = 0;
-    for (const auto& entry : fs::directory_iterator(dir)) {
-        const std::string name = entry.path().filename().string();
-        if (entry.is_regular_file() && name.rfind("frame_", 0) == 0 && entry.path().extension() == ".obj") {
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.is_regular_file() && isRunOutput(entry.path())) {
             fs::remove(entry.path());
             ++removed;
         }
-    }
-    if (removed > 0) logf(LogLevel::Info, "removed ", removed, " old frame files from ", directory);
+    if (removed > 0) logf(LogLevel::Info, "removed ", removed, " files of an earlier run from ", directory);
     return dir;
-}
-
-void writeFrame(const SceneWorld& world, const std::filesystem::path& file) {
-    ObjWriter writer(file.string());
-    for (size_t i = 0; i < world.bodies().size(); ++i)
-        writer.addObject(world.bodies()[i].name, world.worldSurface(i));
-    writer.close();
 }
 
 bool finite(const btRigidBody& body) {
     const btTransform& t = body.getWorldTransform();
-    const btVector3 v = body.getLinearVelocity();
-    return std::isfinite(t.getOrigin().x() + t.getOrigin().y() + t.getOrigin().z() + v.x() + v.y() + v.z()) &&
-           std::isfinite(t.getRotation().w());
+    const btVector3 p = t.getOrigin(), v = body.getLinearVelocity(), w = body.getAngularVelocity();
+    const btQuaternion q = t.getRotation();
+    return std::isfinite(p.x() + p.y() + p.z() + v.x() + v.y() + v.z() + w.x() + w.y() + w.z() + q.x() +
+                         q.y() + q.z() + q.w());
+}
+
+// Output at step 0, every `every` steps and at the last step (every = 0: never).
+bool isOutputStep(int step, int every, int steps) {
+    return every > 0 && (step % every == 0 || step == steps);
+}
+int outputCount(int every, int steps) {
+    int count = 0;
+    for (int step = 0; step <= steps; ++step) count += isOutputStep(step, every, steps) ? 1 : 0;
+    return count;
+}
+
+std::string frameName(int index, const char* extension) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.%s", index, extension);
+    return name;
+}
+
+double peakMemoryMegabytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024.0;  // Linux reports kilobytes
+}
+
+std::string clock(double seconds) {
+    const long s = std::lround(seconds);
+    char text[32];
+    std::snprintf(text, sizeof text, "%ld:%02ld", s / 60, s % 60);
+    return text;
+}
+
+// Progress on stderr: an updating bar on a terminal, a plain line every 10 % otherwise.
+class Progress {
+public:
+    Progress(int total, bool enabled)
+        : total_(total), enabled_(enabled && total > 0), tty_(isatty(fileno(stderr))) {}
+
+    void update(int step, double simulatedTime) {
+        if (!enabled_) return;
+        const int percent = static_cast<int>(100LL * step / total_);
+        if (tty_) {
+            if (step != total_ && sinceDraw_.seconds() < 0.1) return;
+            sinceDraw_.restart();
+            const int width = 30, filled = width * step / total_;
+            const double elapsed = wall_.seconds();
+            const double eta = step > 0 ? elapsed * (total_ - step) / step : 0.0;
+            std::fprintf(stderr, "\r[%s%s] %3d%%  step %d/%d  t = %.3f s  %s elapsed, %s left ",
+                         std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), percent,
+                         step, total_, simulatedTime, clock(elapsed).c_str(), clock(eta).c_str());
+            if (step == total_) std::fputc('\n', stderr);
+            std::fflush(stderr);
+        } else if (percent / 10 > lastTenth_ || step == total_) {
+            lastTenth_ = percent / 10;
+            std::fprintf(stderr, "btfracture-run: step %d/%d (%d%%), t = %.3f s, %.1f s elapsed\n", step,
+                         total_, percent, simulatedTime, wall_.seconds());
+        }
+    }
+    // Ends an unfinished bar's line (a run stopped early).
+    void interrupt() {
+        if (enabled_ && tty_) std::fputc('\n', stderr);
+    }
+
+private:
+    int total_;
+    bool enabled_, tty_;
+    int lastTenth_ = 0;
+    Timer wall_, sinceDraw_;
+};
+
+struct Summary {
+    std::vector<std::pair<std::string, std::string>> rows;
+    void add(const std::string& quantity, const std::string& value) { rows.emplace_back(quantity, value); }
+    void print(const std::string& title) const {
+        size_t width = 8;
+        for (const auto& row : rows) width = std::max(width, row.first.size());
+        std::printf("btfracture-run: %s\n", title.c_str());
+        for (const auto& [quantity, value] : rows)
+            std::printf("  %-*s  %s\n", static_cast<int>(width), quantity.c_str(), value.c_str());
+    }
+};
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+    char text[128];
+    std::snprintf(text, sizeof text, pattern, a, b, c);
+    return text;
+}
+
+// Setup: everything that can reject the input. Errors here exit with 2.
+struct Setup {
+    Scene scene;
+    std::string title;
+    fs::path directory;
+};
+
+Setup setUp(const Options& options) {
+    Setup s;
+    if (options.fractureRb) {
+        s.scene = readFractureRbScene(options.fractureRb->first, options.fractureRb->second);
+        s.title = options.fractureRb->first + " + " + options.fractureRb->second;
+    } else {
+        s.scene = readSceneFile(options.scene);
+        s.title = options.scene;
+    }
+    Scene& scene = s.scene;
+    if (options.steps) scene.world.steps = *options.steps;
+    if (options.method) overrideFractureMethod(scene, *options.method);
+    if (options.seed) scene.effects.seed = *options.seed;
+    if (options.threads) scene.run.threads = *options.threads;
+    if (options.outputs) scene.effects.outputs = *options.outputs;
+    s.directory = options.out                        ? *options.out
+                  : !scene.outputs.directory.empty() ? scene.outputs.directory
+                                                     : "out/" + scene.name;
+    return s;
 }
 
 int run(const Options& options) {
     Timer total;
-    Scene scene = readSceneFile(options.scene);
-    if (options.steps) scene.world.steps = *options.steps;
-    const std::string directory = options.out                        ? *options.out
-                                  : !scene.outputs.directory.empty() ? scene.outputs.directory
-                                                                     : "out/" + scene.name;
-    const int every = scene.outputs.objEveryNSteps;
-    SceneWorld world(scene);  // loads and checks every mesh before anything is written
-    const std::filesystem::path dir = prepareOutput(directory);
-    const double setupSeconds = total.seconds();
-    double simulationSeconds = 0.0, outputSeconds = 0.0;
-    int frames = 0;
-    auto output = [&] {
-        Timer timer;
-        char name[32];
-        std::snprintf(name, sizeof name, "frame_%05d.obj", frames++);
-        writeFrame(world, dir / name);
-        outputSeconds += timer.seconds();
-    };
-    if (every > 0) output();
-    for (int step = 1; step <= scene.world.steps; ++step) {
-        Timer timer;
-        world.stepFrame();
-        simulationSeconds += timer.seconds();
-        for (const auto& body : world.bodies())
-            if (!finite(*body.rigidBody))
-                throw std::runtime_error("body '" + body.name + "' became non-finite at step " +
-                                         std::to_string(step));
-        if (every > 0 && (step % every == 0 || step == scene.world.steps)) output();
+    Setup setup;
+    std::optional<SceneWorld> world;
+    fs::path dir;
+    try {
+        setup = setUp(options);
+        world.emplace(setup.scene);  // loads and checks every mesh before anything is written
+        dir = prepareOutput(setup.directory.string());
+    } catch (const Error& e) {
+        std::fprintf(stderr, "btfracture-run: error: %s\n", e.what());
+        return kBadInput;
     }
+    const Scene& scene = setup.scene;
+    const SceneOutputFormats& formats = scene.effects.outputs;
+    const ThreadLimit threads(scene.run.threads);
+
+    FractureRecorder recorder(formats.csv ? (dir / "statistics.csv").string() : std::string());
+    int breakable = 0;
+    for (size_t i = 0; i < scene.bodies.size(); ++i)
+        if (scene.bodies[i].fracture.fracturable) {
+            recorder.addOriginal(scene.bodies[i].name, world->bodies()[i].volume);
+            ++breakable;
+        }
+    if (breakable > 0)
+        logf(LogLevel::Info, "btfracture-run: ", breakable,
+             " bodies are marked breakable, but this build has no fracture engine yet: they stay rigid");
+    if (formats.vdb)
+        logf(LogLevel::Warning, "btfracture-run: vdb output needs fracture level sets; none written");
+
+    const int steps = scene.world.steps;
+    const int objEvery = formats.obj ? scene.outputs.objEveryNSteps : 0;
+    const int pngEvery = formats.png ? scene.outputs.pngEveryNSteps : 0;
+    std::optional<ScenePreview> preview;
+    if (pngEvery > 0) preview.emplace(*world, scene.outputs.image);
+    // Contact sheet: at most 16 evenly spaced PNG frames, kept as thumbnails.
+    const int thumbnailWidth = std::max(16, scene.outputs.image.width / 4);
+    const int thumbnailHeight =
+        std::max(1, static_cast<int>(std::lround(static_cast<double>(scene.outputs.image.height) *
+                                                 thumbnailWidth / scene.outputs.image.width)));
+    const std::vector<size_t> sheetFrames =
+        contactSheetSelection(static_cast<size_t>(outputCount(pngEvery, steps)), 16);
+    std::vector<Image> thumbnails;
+    std::vector<std::string> thumbnailLabels;
+
+    const double setupSeconds = total.seconds();
+    double stepSeconds = 0.0, objSeconds = 0.0, renderSeconds = 0.0, pngSeconds = 0.0;
+    int objFrames = 0, pngFrames = 0;
+    auto output = [&](int step) {
+        if (isOutputStep(step, objEvery, steps)) {
+            Timer timer;
+            ObjWriter writer((dir / frameName(objFrames++, "obj")).string());
+            for (size_t i = 0; i < world->bodies().size(); ++i)
+                writer.addObject(world->bodies()[i].name, world->worldSurface(i));
+            writer.close();
+            objSeconds += timer.seconds();
+        }
+        if (isOutputStep(step, pngEvery, steps)) {
+            Timer timer;
+            char label[64];
+            std::snprintf(label, sizeof label, "step %d  t = %.3f s", step, world->time());
+            Image frame = preview->render(*world);
+            renderSeconds += timer.seconds();
+            timer.restart();
+            if (std::find(sheetFrames.begin(), sheetFrames.end(), static_cast<size_t>(pngFrames)) !=
+                sheetFrames.end()) {
+                thumbnails.push_back(frame.resized(thumbnailWidth, thumbnailHeight));
+                thumbnailLabels.push_back(format("t = %.3f s", world->time()));
+            }
+            preview->label(frame, label);
+            writePng((dir / frameName(pngFrames, "png")).string(), frame);
+            ++pngFrames;
+            pngSeconds += timer.seconds();
+        }
+    };
+
+    Progress progress(steps, !options.quiet);
+    std::string nonFinite;
+    int stepsTaken = 0;
+    output(0);
+    for (int step = 1; step <= steps; ++step) {
+        Timer timer;
+        world->stepFrame();
+        stepSeconds += timer.seconds();
+        stepsTaken = step;
+        for (const auto& body : world->bodies())
+            if (!finite(*body.rigidBody)) {
+                nonFinite = "body '" + body.name + "' became non-finite (NaN or Inf) at step " +
+                            std::to_string(step) + " (t = " + format("%.6g", world->time()) + " s)";
+                break;
+            }
+        if (!nonFinite.empty()) break;
+        output(step);
+        progress.update(step, world->time());
+    }
+    if (!nonFinite.empty()) progress.interrupt();
+
+    Timer finishing;
+    if (!thumbnails.empty())
+        writePng((dir / "contact_sheet.png").string(),
+                 contactSheet(thumbnails, thumbnailLabels, 4, thumbnailWidth));
+    recorder.close();
+    const bool histogram =
+        formats.csv && recorder.writeFragmentVolumes((dir / "fragment_volumes").string(),
+                                                     (dir / "fragments.csv").string(), formats.png);
+    pngSeconds += finishing.seconds();
 
     if (!options.quiet) {
         int dynamic = 0;
-        for (const auto& body : world.bodies()) dynamic += body.rigidBody->getInvMass() > 0 ? 1 : 0;
-        const int bodies = static_cast<int>(world.bodies().size());
-        std::printf("btfracture-run: %s\n", options.scene.c_str());
-        std::printf("  steps      %d x %.4g s = %.4g s simulated (%d substep%s each)\n", scene.world.steps,
-                    scene.world.dt, world.time(), scene.world.substeps, scene.world.substeps == 1 ? "" : "s");
-        std::printf("  bodies     %d (%d dynamic, %d static)\n", bodies, dynamic, bodies - dynamic);
-        std::printf("  wall time  %.2f s (setup %.2f s, simulation %.2f s, output %.2f s)\n", total.seconds(),
-                    setupSeconds, simulationSeconds, outputSeconds);
-        if (frames > 0)
-            std::printf(
-                "  output     %d OBJ frames (every %d steps) in %s/ : frame_00000.obj .. frame_%05d.obj\n",
-                frames, every, dir.string().c_str(), frames - 1);
-        else
-            std::printf("  output     none (outputs.obj_every_n_steps is 0)\n");
+        for (const auto& body : world->bodies()) dynamic += body.rigidBody->getInvMass() > 0 ? 1 : 0;
+        const int bodies = static_cast<int>(world->bodies().size());
+        const double fractureSeconds = recorder.fractureSeconds() + recorder.swapSeconds();
+        Summary summary;
+        summary.add("steps", std::to_string(stepsTaken) +
+                                 (stepsTaken < steps ? " of " + std::to_string(steps) : "") +
+                                 format(" x %.4g s = %.4g s simulated", scene.world.dt, world->time()) +
+                                 " (" + std::to_string(scene.world.substeps) + " substep" +
+                                 (scene.world.substeps == 1 ? "" : "s") + " each)");
+        summary.add("bodies", std::to_string(bodies) + " (" + std::to_string(dynamic) + " dynamic, " +
+                                  std::to_string(bodies - dynamic) + " static or kinematic), " +
+                                  std::to_string(breakable) + " breakable");
+        summary.add("fracture events", std::to_string(recorder.events()));
+        summary.add("fragments", std::to_string(recorder.fragments().size()));
+        summary.add("rigid-body time",
+                    format("%.2f s (%.3f ms per step)", stepSeconds - fractureSeconds,
+                           stepsTaken > 0 ? 1e3 * (stepSeconds - fractureSeconds) / stepsTaken : 0.0));
+        summary.add("fracture time", format("%.2f s", fractureSeconds));
+        summary.add("output time",
+                    format("%.2f s (OBJ %.2f s, PNG %.2f s", objSeconds + renderSeconds + pngSeconds,
+                           objSeconds, renderSeconds + pngSeconds) +
+                        (pngFrames > 0 ? format("; %.1f ms render + %.1f ms encode per frame)",
+                                                1e3 * renderSeconds / pngFrames, 1e3 * pngSeconds / pngFrames)
+                                       : std::string(")")));
+        summary.add("setup time", format("%.2f s", setupSeconds));
+        summary.add("wall time", format("%.2f s", total.seconds()));
+        summary.add("peak memory", format("%.1f MB (max resident set size)", peakMemoryMegabytes()));
+        summary.add("threads", std::to_string(ThreadLimit::openmpThreads()) + " OpenMP, " +
+                                   std::to_string(ThreadLimit::tbbThreads()) + " TBB");
+        std::string written;
+        auto item = [&](const std::string& text) { written += (written.empty() ? "" : ", ") + text; };
+        if (objFrames > 0)
+            item(std::to_string(objFrames) + " OBJ frames (every " + std::to_string(objEvery) +
+                 " steps) frame_00000.obj .. " + frameName(objFrames - 1, "obj"));
+        if (pngFrames > 0)
+            item(std::to_string(pngFrames) + " PNG frames (every " + std::to_string(pngEvery) +
+                 " steps) frame_00000.png .. " + frameName(pngFrames - 1, "png") + ", contact_sheet.png");
+        if (formats.csv)
+            item(std::string("statistics.csv") + (histogram ? ", fragments.csv, fragment_volumes.csv" : ""));
+        if (histogram && formats.png) item("fragment_volumes.png");
+        summary.add("output", written.empty() ? "none" : dir.string() + "/ : " + written);
+        summary.print(setup.title);
     }
-    return 0;
+    if (!nonFinite.empty()) {
+        std::fprintf(stderr, "btfracture-run: stopped: %s\n", nonFinite.c_str());
+        return kNonFinite;
+    }
+    return kSuccess;
 }
 
 }  // namespace
@@ -176,19 +496,16 @@ int main(int argc, char** argv) {
         options = parseOptions(argc, argv);
     } catch (const Error& e) {
         std::fprintf(stderr, "btfracture-run: error: %s\n%s(try --help)\n", e.what(), kUsage);
-        return 2;
+        return kBadInput;
     }
     if (options.quiet) setLogLevel(LogLevel::Warning);
     try {
         return run(options);
-    } catch (const Error& e) {
-        std::fprintf(stderr, "btfracture-run: error: %s\n", e.what());
-        return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "btfracture-run: internal failure: %s\n", e.what());
-        return 1;
+        return kInternalFailure;
     } catch (...) {
         std::fprintf(stderr, "btfracture-run: internal failure (unknown exception)\n");
-        return 1;
+        return kInternalFailure;
     }
 }

@@ -1,16 +1,21 @@
 #pragma once
 // Test scenes for the Bullet coupling: a ground box, a fracturable glass slab resting on it and
-// a steel ball thrown down at it, in a btFractureDynamicsWorld with the plane-split engine.
+// a steel ball thrown down at it, in a btFractureDynamicsWorld with the plane-split engine (or
+// the physical BemFractureEngine).
 #include <btFracture/core/Material.h>
+#include <btFracture/dynamics/BemFractureEngine.h>
 #include <btFracture/dynamics/PlaneSplitFractureEngine.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 
 #include <btBulletDynamicsCommon.h>
 
+#include <gtest/gtest.h>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -24,6 +29,7 @@ struct SceneOptions {
     double ballX = 0.05, ballZ = 0.03;  // where the ball hits the slab's top face [m]
     int maxRefractureDepth = 2;
     bool withEngine = true;
+    bool physicalEngine = false;  // BemFractureEngine instead of the plane-split stand-in
     Eigen::Vector3d slabHalfExtents = Eigen::Vector3d(0.2, 0.025, 0.2);  // [m]
     // Free flight: no gravity, the slab lifted 0.5 m off the ground, moving and spinning.
     bool freeFlight = false;
@@ -73,7 +79,10 @@ public:
         world = std::make_unique<btFractureDynamicsWorld>(&dispatcher, &broadphase, &solver, &config);
         world->setGravity(btVector3(0, options.freeFlight ? btScalar(0) : btScalar(-9.81), 0));
         const double lift = options.freeFlight ? 0.5 : 0.0;
-        if (options.withEngine) world->setFractureEngine(std::make_unique<PlaneSplitFractureEngine>());
+        if (options.withEngine && options.physicalEngine)
+            world->setFractureEngine(std::make_unique<BemFractureEngine>());
+        else if (options.withEngine)
+            world->setFractureEngine(std::make_unique<PlaneSplitFractureEngine>());
 
         btTransform t;
         t.setIdentity();
@@ -126,6 +135,13 @@ public:
         for (int i = 0; i < count; ++i) world->stepSimulation(btScalar(kStep), 1, btScalar(kStep));
     }
 
+    // Poses of the fragments, in world array order.
+    std::vector<btTransform> fragmentPoses() const {
+        std::vector<btTransform> poses;
+        for (btFractureRigidBody* f : fragments()) poses.push_back(f->getWorldTransform());
+        return poses;
+    }
+
     // Fragments in the world (world-owned btFractureRigidBody), in world array order.
     std::vector<btFractureRigidBody*> fragments() const {
         std::vector<btFractureRigidBody*> out;
@@ -147,5 +163,15 @@ public:
     std::unique_ptr<btFractureRigidBody> slab;
     std::unique_ptr<btRigidBody> ball;
 };
+
+// Two runs' fragment poses agree bit for bit.
+inline void expectBitIdentical(const std::vector<btTransform>& first, const std::vector<btTransform>& second) {
+    ASSERT_GE(first.size(), 2u);
+    ASSERT_EQ(first.size(), second.size());
+    for (std::size_t i = 0; i < first.size(); ++i) {
+        EXPECT_EQ(std::memcmp(&first[i].getBasis(), &second[i].getBasis(), sizeof(btMatrix3x3)), 0) << i;
+        EXPECT_EQ(std::memcmp(&first[i].getOrigin(), &second[i].getOrigin(), sizeof(btVector3)), 0) << i;
+    }
+}
 
 }  // namespace btfracture::test

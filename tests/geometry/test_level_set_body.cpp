@@ -64,7 +64,7 @@ TEST(LevelSetBody, ArmadilloMassPropertiesMatchMeshAtDefaultVoxelSize) {
 }
 
 TEST(LevelSetBody, OffsetSphereMassIsAnalytic) {
-    // Coarse on purpose (40 voxels across): the smoothed Heaviside still hits a sphere closely.
+    // Coarse on purpose (40 voxels across): the plane-fraction integrals still hit a sphere closely.
     const double r = 0.05;
     const Eigen::Vector3d centre(0.3, -0.2, 0.1);
     const LevelSetBody body(test::sphere(r, 5, centre), 2 * r / 40);

@@ -181,6 +181,16 @@ TEST(MeshReader, SyntaxErrorsNameFileAndLine) {
     }
 }
 
+// A header whose last line has no line end (a fuzzing find: the data offset ran past the end).
+TEST(MeshReader, PlyHeaderAtEndOfFile) {
+    // Both are bad files: the answer must be btfracture::Error (it was std::out_of_range).
+    EXPECT_THROW(parsePly("ply\nformat ascii 1.0\nelement vertex 0\nend_header", "short.ply"), Error);
+    EXPECT_THROW(
+        parsePly("ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nend_header\tdata",
+                 "short.ply"),
+        Error);
+}
+
 TEST(MeshReader, MissingFileNamesPath) {
     const std::string message = loadError(kBad + "does_not_exist.obj");
     EXPECT_TRUE(contains(message,

@@ -37,7 +37,7 @@ bool contains(const std::string& text, const std::string& part) {
 TEST(SceneFile, DefaultsAndValues) {
     const Scene s = parseScene(withBody(R"({"name": "rock", "shape": {"type": "mesh", "file": "bunny.obj"},
         "scale": [1, 2, 3], "position": [1, 2, 3], "linear_velocity": [0, 0, -4], "angular_velocity": [0, 1, 0],
-        "material": "glass", "fracturable": true})"),
+        "material": "glass"})"),
                                "dir/test.json", kMeshes);
     EXPECT_EQ(s.name, "test");
     EXPECT_EQ(s.world.gravity, Eigen::Vector3d(0, -9.81, 0));
@@ -58,7 +58,125 @@ TEST(SceneFile, DefaultsAndValues) {
     EXPECT_DOUBLE_EQ(rock.density, 2500.0);  // from the material
     EXPECT_FALSE(rock.mass.has_value());
     EXPECT_FALSE(rock.isStatic());
-    EXPECT_TRUE(rock.fracturable);
+    EXPECT_FALSE(rock.fracture.fracturable);  // no effects section: nothing breaks
+    EXPECT_EQ(rock.motion, SceneMotion::Dynamic);
+    EXPECT_DOUBLE_EQ(rock.friction, 0.5);
+    EXPECT_DOUBLE_EQ(rock.restitution, 0.0);
+    EXPECT_EQ(rock.fracture.bemTriangleTarget, 1000);
+    EXPECT_EQ(rock.fracture.collisionTriangleTarget, 5000);
+    EXPECT_EQ(rock.fracture.voxelSize, 0.0);
+    // Without an effects section a run writes OBJ frames only.
+    EXPECT_TRUE(s.effects.outputs.obj);
+    EXPECT_FALSE(s.effects.outputs.csv || s.effects.outputs.png || s.effects.outputs.vdb);
+    EXPECT_EQ(s.effects.seed, 0u);
+    EXPECT_EQ(s.outputs.pngEveryNSteps, 10);
+    EXPECT_EQ(s.outputs.image.width, 640);
+}
+
+TEST(SceneFile, EffectsResolutionsAndMotion) {
+    const Scene s = parseScene(R"({"bodies": [
+        {"name": "ground", "shape": {"type": "plane"}, "friction": 0.8},
+        {"name": "pane", "shape": {"type": "box", "half_extents": [0.5, 0.5, 0.005]}, "material": "glass",
+         "resolution": {"bem_triangles": 600, "collision_triangles": 2400, "voxel_size": 0.002}},
+        {"name": "rock", "shape": {"type": "sphere", "radius": 0.1}, "state": "sleeping", "restitution": 0.25},
+        {"name": "pusher", "shape": {"type": "box", "half_extents": [0.1, 0.1, 0.1]}, "state": "kinematic",
+         "linear_velocity": [1, 0, 0]}],
+      "outputs": {"png_every_n_steps": 5,
+                  "image": {"width": 320, "height": 200, "projection": "orthographic", "shading": "flat",
+                            "view": [0, 1, 0]}},
+      "effects": {"outputs": ["png", "csv", "obj"], "seed": 42,
+                  "fracture": {"pane": {"method": "hybrid", "hybrid_threshold": 3000, "refracture_depth": 2,
+                                        "impulse_threshold": 0.5,
+                                        "material_noise": {"amplitude": 0.2, "seed": 7}},
+                               "rock": {"method": "est"}}}})",
+                               "test.json", kMeshes);
+    EXPECT_DOUBLE_EQ(s.bodies[0].friction, 0.8);
+    const SceneBody& pane = s.bodies[1];
+    EXPECT_EQ(pane.fracture.bemTriangleTarget, 600);
+    EXPECT_EQ(pane.fracture.collisionTriangleTarget, 2400);
+    EXPECT_DOUBLE_EQ(pane.fracture.voxelSize, 0.002);
+    EXPECT_TRUE(pane.fracture.fracturable);
+    EXPECT_EQ(pane.fracture.method, FractureMethod::Hybrid);
+    EXPECT_EQ(pane.fracture.hybridElementThreshold, 3000);
+    EXPECT_EQ(pane.fracture.maxRefractureDepth, 2);
+    EXPECT_DOUBLE_EQ(pane.fracture.impulseThreshold, 0.5);
+    EXPECT_DOUBLE_EQ(pane.materialNoise.amplitude, 0.2);
+    EXPECT_EQ(pane.materialNoise.seed, 7u);
+    const SceneBody& rock = s.bodies[2];
+    EXPECT_TRUE(rock.fracture.fracturable);
+    EXPECT_EQ(rock.fracture.method, FractureMethod::Estimated);
+    EXPECT_EQ(rock.fracture.maxRefractureDepth, 3);  // default
+    EXPECT_EQ(rock.motion, SceneMotion::Sleeping);
+    EXPECT_DOUBLE_EQ(rock.restitution, 0.25);
+    EXPECT_EQ(s.bodies[3].motion, SceneMotion::Kinematic);
+    EXPECT_FALSE(s.bodies[3].isStatic());
+    EXPECT_FALSE(s.bodies[3].fracture.fracturable);
+    EXPECT_TRUE(s.effects.outputs.obj && s.effects.outputs.csv && s.effects.outputs.png);
+    EXPECT_FALSE(s.effects.outputs.vdb);
+    EXPECT_EQ(s.effects.seed, 42u);
+    EXPECT_EQ(s.outputs.pngEveryNSteps, 5);
+    EXPECT_EQ(s.outputs.image.width, 320);
+    EXPECT_EQ(s.outputs.image.height, 200);
+    EXPECT_EQ(s.outputs.image.projection, Projection::Orthographic);
+    EXPECT_EQ(s.outputs.image.shading, Shading::Flat);
+
+    // --method overrides every breakable body and leaves the others alone.
+    Scene overridden = s;
+    overrideFractureMethod(overridden, FractureMethod::Full);
+    EXPECT_EQ(overridden.bodies[1].fracture.method, FractureMethod::Full);
+    EXPECT_EQ(overridden.bodies[2].fracture.method, FractureMethod::Full);
+    EXPECT_EQ(parseFractureMethod("est", "--method"), FractureMethod::Estimated);
+    try {
+        parseFractureMethod("fast", "--method");
+        ADD_FAILURE() << "unknown method accepted";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), R"(--method: expected "full", "est" or "hybrid", got "fast")");
+    }
+}
+
+TEST(SceneFile, BadEffectsNameTheirPath) {
+    const std::string bodies = R"("bodies": [{"name": "ground", "shape": {"type": "plane"}},
+        {"name": "ball", "shape": {"type": "sphere", "radius": 1}}])";
+    const std::pair<std::string, std::string> cases[] = {
+        {R"("effects": {"outputs": ["obj", "gif"]})",
+         R"(test.json: effects.outputs[1]: expected "obj", "vdb", "csv" or "png", got "gif")"},
+        {R"("effects": {"outputs": ["png", "png"]})",
+         R"(test.json: effects.outputs[1]: listed twice: "png")"},
+        {R"("effects": {"outputs": "png"})", "test.json: effects.outputs: expected an array of"},
+        {R"("effects": {"seed": -3})", "test.json: effects.seed: expected an integer seed >= 0, got -3"},
+        {R"("effects": {"fracture": {"bal": true}})",
+         "test.json: effects.fracture.bal: no body named 'bal' (bodies: ground, ball)"},
+        {R"("effects": {"fracture": {"ground": true}})",
+         "test.json: effects.fracture.ground: body 'ground' is static and cannot break"},
+        {R"("effects": {"fracture": {"ball": "yes"}})",
+         R"(test.json: effects.fracture.ball: expected true, false or an object {method, hybrid_threshold,)"},
+        {R"("effects": {"fracture": {"ball": {"methd": "est"}}})",
+         "test.json: effects.fracture.ball.methd: unknown key (expected one of: method, hybrid_threshold,"},
+        {R"("effects": {"fracture": {"ball": {"method": "fast"}}})",
+         R"(test.json: effects.fracture.ball.method: expected "full", "est" or "hybrid", got "fast")"},
+        {R"("effects": {"fracture": {"ball": {"method": "full", "hybrid_threshold": 10}}})",
+         R"(test.json: effects.fracture.ball.hybrid_threshold: applies to method "hybrid" only (method is "full"))"},
+        {R"("effects": {"fracture": {"ball": {"refracture_depth": 99}}})",
+         "test.json: effects.fracture.ball.refracture_depth: expected an integer in [0, 20], got 99"},
+        {R"("effects": {"fracture": {"ball": {"material_noise": {"amplitude": 1.5}}}})",
+         "test.json: effects.fracture.ball.material_noise.amplitude: expected a number in [0, 1), got 1.5"},
+        {R"("effects": {"fracture": {"ball": {"material_noise": {"seed": 1}}}})",
+         "test.json: effects.fracture.ball.material_noise.amplitude: missing"},
+        {R"("effects": {"fracture": {"ball": {"impulse_threshold": 0}}})",
+         "test.json: effects.fracture.ball.impulse_threshold: expected a positive number [N s], got 0"},
+        {R"("effects": {"fractures": {}})",
+         "test.json: effects.fractures: unknown key (expected one of: outputs, seed, fracture)"},
+        {R"("outputs": {"image": {"width": 8}})",
+         "test.json: outputs.image.width: expected an integer in [16, 8192], got 8"},
+        {R"("outputs": {"image": {"projection": "fisheye"}})",
+         R"(test.json: outputs.image.projection: expected "perspective" or "orthographic", got "fisheye")"},
+        {R"("outputs": {"image": {"view": [0, 0, 0]}})",
+         "test.json: outputs.image.view: expected a non-zero direction, got [0,0,0]"},
+    };
+    for (const auto& [section, expected] : cases) {
+        const std::string message = errorOf("{" + bodies + ", " + section + "}");
+        EXPECT_TRUE(contains(message, expected)) << "expected: " << expected << "\n     got: " << message;
+    }
 }
 
 TEST(SceneFile, OrientationsAndMaterials) {
@@ -97,9 +215,9 @@ TEST(SceneFile, UnknownKeysNameTheirPath) {
         errorOf(withBody(
             R"({"shape": {"type": "box", "half_extents": [1, 1, 1]}, "material": {"E": 1, "youngs": 2}})")),
         "test.json: bodies[1].material.youngs: unknown key"));
-    EXPECT_TRUE(
-        contains(errorOf(R"({"bodies": [{"shape": {"type": "plane"}}], "output": {}})"),
-                 "test.json: output: unknown key (expected one of: description, world, bodies, outputs)"));
+    EXPECT_TRUE(contains(
+        errorOf(R"({"bodies": [{"shape": {"type": "plane"}}], "output": {}})"),
+        "test.json: output: unknown key (expected one of: description, world, bodies, outputs, effects)"));
 }
 
 TEST(SceneFile, WrongTypesAndBadValues) {
@@ -125,8 +243,25 @@ TEST(SceneFile, WrongTypesAndBadValues) {
          "test.json: bodies[1].shape.half_extents: expected 3 positive half extents [m], got [1,0,1]"},
         {withBody(R"({"shape": {"type": "mesh", "file": "bunny.obj", "collision": "bvh"}})"),
          R"(test.json: bodies[1].shape.collision: expected "convex_hull" or "gimpact", got "bvh")"},
-        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "fracturable": "yes"})"),
-         R"(test.json: bodies[1].fracturable: expected true or false, got "yes")"},
+        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "fracturable": true})"),
+         "test.json: bodies[1].fracturable: unknown key"},
+        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"bem_triangles": 900,
+            "collision_triangles": 400}})"),
+         "test.json: bodies[1].resolution: collision_triangles (400) must be >= bem_triangles (900)"},
+        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"voxel_size": -1}})"),
+         "test.json: bodies[1].resolution.voxel_size: expected a positive number [m], got -1"},
+        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"bem_triangles": 2}})"),
+         "test.json: bodies[1].resolution.bem_triangles: expected an integer >= 4, got 2"},
+        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "state": "frozen"})"),
+         R"(test.json: bodies[1].state: expected "dynamic", "sleeping" or "kinematic", got "frozen")"},
+        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "state": "kinematic", "mass": 3})"),
+         "test.json: bodies[1].mass: not allowed for a kinematic body (it has infinite mass)"},
+        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "mass": 0, "state": "sleeping"})"),
+         R"(test.json: bodies[1].state: a static body (mass 0) cannot be "sleeping")"},
+        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "friction": -0.1})"),
+         "test.json: bodies[1].friction: expected a number >= 0, got -0.1"},
+        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "restitution": 1.5})"),
+         "test.json: bodies[1].restitution: expected a number in [0, 1], got 1.5"},
         {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "scale": [1, 2, 1]})"),
          "test.json: bodies[1].scale: a sphere takes one uniform scale, got [1,2,1]"},
         {withBody(R"({"shape": {"type": "box", "half_extents": [1, 1, 1]}, "scale": -1})"),
@@ -198,6 +333,10 @@ TEST(SceneFile, MissingFilesAndBrokenJson) {
 
     const std::string syntax = errorOf("{\"bodies\": [\n  {\"shape\": }\n]}");
     EXPECT_TRUE(contains(syntax, "test.json: invalid JSON: parse error at line 2, column 13")) << syntax;
+    // nlohmann reports numbers beyond double range as out_of_range, not parse_error (a fuzzing find).
+    const std::string overflow =
+        errorOf(R"({"world": {"dt": 1e999}, "bodies": [{"shape": {"type": "plane"}}]})");
+    EXPECT_TRUE(contains(overflow, "test.json: invalid JSON: number overflow parsing '1e999'")) << overflow;
     EXPECT_TRUE(
         contains(errorOf(R"({"world": {"dt": 0.1, "dt": 0.2}, "bodies": [{"shape": {"type": "plane"}}]})"),
                  "test.json: duplicate key \"dt\""));

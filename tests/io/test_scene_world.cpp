@@ -169,12 +169,13 @@ TEST(SceneWorld, FactoryCreatesWorldAndBodies) {
                                                 const TriangleMesh& surface) const override {
             ++bodies;
             surfaceVertices += surface.vertices.size();
-            return std::make_unique<TaggedBody>(info,
-                                                description.name + (description.fracturable ? "*" : ""));
+            return std::make_unique<TaggedBody>(
+                info, description.name + (description.fracture.fracturable ? "*" : ""));
         }
     } factory;
     SceneWorld world(sceneOf(R"({"bodies": [{"name": "ground", "shape": {"type": "plane"}},
-        {"name": "cube", "shape": {"type": "mesh", "file": "formats/cube.obj"}, "position": [0, 3, 0], "fracturable": true}]})"),
+        {"name": "cube", "shape": {"type": "mesh", "file": "formats/cube.obj"}, "position": [0, 3, 0]}],
+        "effects": {"fracture": {"cube": true}}})"),
                      factory);
     EXPECT_EQ(factory.worlds, 1);
     EXPECT_EQ(factory.bodies, 2);
@@ -198,4 +199,37 @@ TEST(SceneWorld, BadMeshNamesSceneBodyAndDefect) {
             << message;
         EXPECT_NE(message.find("3 boundary edges"), std::string::npos) << message;
     }
+}
+
+// A kinematic body moves at exactly its scene velocity, ignores gravity, and pushes a dynamic box
+// it runs into; a sleeping body hangs in the air until something wakes it. Friction and
+// restitution reach Bullet.
+TEST(SceneWorld, KinematicSleepingFrictionRestitution) {
+    SceneWorld world(sceneOf(R"({"world": {"dt": 0.01, "gravity": [0, -9.81, 0]},
+        "bodies": [{"name": "ground", "shape": {"type": "plane"}, "friction": 0.9},
+                   {"name": "pusher", "shape": {"type": "box", "half_extents": [0.1, 0.1, 0.1]},
+                    "position": [-1, 0.1, 0], "state": "kinematic", "linear_velocity": [2, 0, 0],
+                    "angular_velocity": [0, 1, 0]},
+                   {"name": "crate", "shape": {"type": "box", "half_extents": [0.1, 0.1, 0.1]},
+                    "position": [0, 0.1, 0], "restitution": 0.3},
+                   {"name": "lamp", "shape": {"type": "sphere", "radius": 0.1}, "position": [5, 3, 0],
+                    "state": "sleeping"}]})"));
+    const btRigidBody& pusher = *world.bodies()[1].rigidBody;
+    const btRigidBody& crate = *world.bodies()[2].rigidBody;
+    const btRigidBody& lamp = *world.bodies()[3].rigidBody;
+    EXPECT_TRUE(pusher.isKinematicObject());
+    EXPECT_FLOAT_EQ(world.bodies()[0].rigidBody->getFriction(), 0.9f);
+    EXPECT_FLOAT_EQ(crate.getRestitution(), 0.3f);
+    for (int n = 1; n <= 100; ++n) {
+        world.stepFrame();
+        ASSERT_NEAR(position(pusher).x(), -1.0 + 2.0 * 0.01 * n, 1e-4) << "step " << n;
+        ASSERT_NEAR(position(pusher).y(), 0.1, 1e-6) << "step " << n;
+    }
+    // The yaw advanced by w t = 1 rad.
+    const btQuaternion q = pusher.getWorldTransform().getRotation();
+    EXPECT_NEAR(q.getAngle(), 1.0, 1e-3);
+    // The pusher reached x = 1 at t = 1 s, so the crate (at x = 0, 0.2 m wide) was pushed along.
+    EXPECT_GT(position(crate).x(), 0.5);
+    EXPECT_NEAR(position(lamp).y(), 3.0, 1e-12);
+    EXPECT_EQ(lamp.getActivationState(), ISLAND_SLEEPING);
 }

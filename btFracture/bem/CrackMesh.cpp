@@ -1,0 +1,134 @@
+#include <btFracture/bem/CrackMesh.h>
+
+#include <btFracture/core/Error.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+namespace btfracture {
+
+int CrackMesh::addNode(const Eigen::Vector3d& position) {
+    if (!position.allFinite()) throw Error("CrackMesh: crack node position is not finite");
+    nodes_.push_back(position);
+    nodeTriangles_.emplace_back();
+    unknown_.push_back(-1);
+    return nodeCount() - 1;
+}
+
+int CrackMesh::addTriangle(int a, int b, int c) {
+    for (int v : {a, b, c})
+        if (v < 0 || v >= nodeCount()) throw Error("CrackMesh: triangle corner " + std::to_string(v) + " out of range");
+    if (a == b || b == c || a == c) throw Error("CrackMesh: triangle with a repeated corner");
+    triangles_.push_back({a, b, c});
+    const int t = triangleCount() - 1;
+    if (!(area(t) > 0.0)) throw Error("CrackMesh: degenerate crack triangle " + std::to_string(t));
+    for (int v : {a, b, c}) nodeTriangles_[v].push_back(t);
+    return t;
+}
+
+double CrackMesh::area(int t) const {
+    const auto& tri = triangles_[t];
+    return 0.5 * (nodes_[tri[1]] - nodes_[tri[0]]).cross(nodes_[tri[2]] - nodes_[tri[0]]).norm();
+}
+
+Eigen::Vector3d CrackMesh::normal(int t) const {
+    const auto& tri = triangles_[t];
+    return (nodes_[tri[1]] - nodes_[tri[0]]).cross(nodes_[tri[2]] - nodes_[tri[0]]).normalized();
+}
+
+double CrackMesh::sheetArea(int t) const { return sheetAreas_[sheetOfTriangle_[t]]; }
+
+CrackMesh CrackMesh::extractSheets(const std::vector<int>& sheets, const Eigen::Vector3d& shift) const {
+    CrackMesh out;
+    std::vector<int> newIndex(nodes_.size(), -1);
+    for (int t = 0; t < triangleCount(); ++t) {
+        if (std::find(sheets.begin(), sheets.end(), sheetOfTriangle_[t]) == sheets.end()) continue;
+        std::array<int, 3> tri;
+        for (int k = 0; k < 3; ++k) {
+            int& index = newIndex[triangles_[t][k]];
+            if (index < 0) index = out.addNode(nodes_[triangles_[t][k]] + shift);
+            tri[k] = index;
+        }
+        out.addTriangle(tri[0], tri[1], tri[2]);
+    }
+    return out;
+}
+
+Panel CrackMesh::panel(int t, int idOffset) const {
+    const auto& tri = triangles_[t];
+    return Panel{{tri[0] + idOffset, tri[1] + idOffset, tri[2] + idOffset},
+                 {nodes_[tri[0]], nodes_[tri[1]], nodes_[tri[2]]},
+                 -normal(t),
+                 area(t)};
+}
+
+Eigen::Vector3d CrackMesh::operatorCurl(int t, int k) const {
+    const auto& tri = triangles_[t];
+    const Eigen::Vector3d n = normal(t);
+    const double twiceArea = 2.0 * area(t);
+    // grad(psi_k) = n_c x (opposite edge, counter-clockwise) / (2A); the operator normal is -n_c.
+    const Eigen::Vector3d edge = nodes_[tri[(k + 2) % 3]] - nodes_[tri[(k + 1) % 3]];
+    const Eigen::Vector3d grad = n.cross(edge) / twiceArea;
+    return (-n).cross(grad);
+}
+
+std::vector<int> CrackMesh::refreshUnknowns() {
+    // Edge census: a boundary edge is used once, an interior edge twice in opposite directions.
+    std::map<std::pair<int, int>, std::vector<std::pair<int, bool>>> edges;  // -> (triangle, forward)
+    for (int t = 0; t < triangleCount(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const int a = triangles_[t][k], b = triangles_[t][(k + 1) % 3];
+            edges[{std::min(a, b), std::max(a, b)}].emplace_back(t, a < b);
+        }
+    std::vector<char> onFront(nodes_.size(), 0);
+    frontEdges_.clear();
+    std::vector<int> parent(triangles_.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](int i) {
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    for (const auto& [edge, uses] : edges) {
+        if (uses.size() > 2 || (uses.size() == 2 && uses[0].second == uses[1].second)) {
+            std::ostringstream msg;
+            msg << "CrackMesh: edge " << edge.first << "-" << edge.second
+                << (uses.size() > 2 ? " is shared by more than two crack triangles" : " is inconsistently oriented");
+            throw Error(msg.str());
+        }
+        if (uses.size() == 1) {
+            onFront[edge.first] = onFront[edge.second] = 1;
+            const int t = uses[0].first;
+            const bool forward = uses[0].second;
+            frontEdges_.push_back({forward ? edge.first : edge.second, forward ? edge.second : edge.first, t});
+        } else {
+            parent[find(uses[0].first)] = find(uses[1].first);
+        }
+    }
+    // Sheets (edge-connected components) and their areas.
+    sheetOfTriangle_.assign(triangles_.size(), -1);
+    std::map<int, int> sheetOfRoot;
+    sheetAreas_.clear();
+    for (int t = 0; t < triangleCount(); ++t) {
+        auto [it, inserted] = sheetOfRoot.emplace(find(t), static_cast<int>(sheetAreas_.size()));
+        if (inserted) sheetAreas_.push_back(0.0);
+        sheetOfTriangle_[t] = it->second;
+        sheetAreas_[it->second] += area(t);
+    }
+    std::vector<int> activated;
+    for (int i = 0; i < nodeCount(); ++i) {
+        if (onFront[i] && unknown_[i] >= 0)
+            throw Error("CrackMesh: node " + std::to_string(i) + " returned to the front; sheets may only grow");
+        if (!onFront[i] && unknown_[i] < 0 && !nodeTriangles_[i].empty()) {
+            unknown_[i] = unknownCount_++;
+            nodeOfUnknown_.push_back(i);
+            activated.push_back(i);
+        }
+    }
+    return activated;
+}
+
+}  // namespace btfracture

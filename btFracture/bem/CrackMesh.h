@@ -1,0 +1,71 @@
+#pragma once
+// All crack sheets of one body (paper §3): single sheets of flat triangles inside the body,
+// oriented so that each triangle's normal is the crack normal n_c. The unknown on a node is
+// the crack opening displacement COD = u+ - u- (+ on the side n_c points to); it is zero on
+// front nodes (the sheet's boundary), so only interior nodes carry unknowns. Sheets only grow
+// by triangles attached at the front, so an interior node's support never changes and the
+// crack blocks can be extended incrementally.
+#include <btFracture/bem/PairIntegrals.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace btfracture {
+
+class CrackMesh {
+public:
+    int addNode(const Eigen::Vector3d& position);  // body frame [m]; returns the node index
+    int addTriangle(int a, int b, int c);          // counter-clockwise around n_c
+    // Recomputes the front, numbers the unknowns of nodes that became interior since the last
+    // call (existing unknowns keep their numbers) and returns those nodes. Throws if a sheet
+    // is not an edge-manifold open surface.
+    std::vector<int> refreshUnknowns();
+
+    int nodeCount() const { return static_cast<int>(nodes_.size()); }
+    int triangleCount() const { return static_cast<int>(triangles_.size()); }
+    const Eigen::Vector3d& node(int i) const { return nodes_[i]; }
+    const std::array<int, 3>& triangle(int t) const { return triangles_[t]; }
+    const std::vector<int>& trianglesAtNode(int i) const { return nodeTriangles_[i]; }
+    double area(int t) const;
+    Eigen::Vector3d normal(int t) const;  // crack normal n_c
+
+    bool isFront(int i) const { return unknown_[i] < 0; }
+    int unknownOf(int i) const { return unknown_[i]; }  // -1 on the front
+    int unknownCount() const { return unknownCount_; }
+    const std::vector<int>& nodeOfUnknown() const { return nodeOfUnknown_; }
+    // Front edges (a, b, t): the boundary edge a-b of triangle t, a -> b in t's orientation.
+    struct FrontEdge {
+        int a, b, triangle;
+    };
+    const std::vector<FrontEdge>& frontEdges() const { return frontEdges_; }
+    // Total area [m^2] of the sheet containing triangle t (the EST's crack area A, §4.2).
+    double sheetArea(int t) const;
+    // Sheets are the edge-connected components, numbered by their lowest triangle (as of the last
+    // refreshUnknowns()).
+    int sheetOf(int t) const { return sheetOfTriangle_[t]; }
+    int sheetCount() const { return static_cast<int>(sheetAreas_.size()); }
+    // A new crack mesh with just the given sheets, every node moved by `shift` [m] (carrying
+    // incomplete cracks into a fragment's own frame, §5.3). No unknowns are numbered yet.
+    CrackMesh extractSheets(const std::vector<int>& sheets, const Eigen::Vector3d& shift) const;
+
+    // The operator sees a crack as extra boundary with normal -n_c and density COD (see
+    // FORMULATION.md); node ids are offset by `idOffset` so they never match surface nodes.
+    Panel panel(int t, int idOffset) const;
+    // Surface curl (-n_c) x grad(psi_k) of the hat of corner k on triangle t.
+    Eigen::Vector3d operatorCurl(int t, int k) const;
+
+private:
+    std::vector<Eigen::Vector3d> nodes_;
+    std::vector<std::array<int, 3>> triangles_;
+    std::vector<std::vector<int>> nodeTriangles_;
+    std::vector<int> unknown_;
+    std::vector<int> nodeOfUnknown_;
+    std::vector<FrontEdge> frontEdges_;
+    std::vector<int> sheetOfTriangle_;
+    std::vector<double> sheetAreas_;
+    int unknownCount_ = 0;
+};
+
+}  // namespace btfracture

@@ -1,0 +1,188 @@
+#include <btFracture/bem/CrackSystem.h>
+
+#include <btFracture/bem/BoundaryOperators.h>
+#include <btFracture/bem/GalerkinBlocks.h>
+#include <btFracture/core/Error.h>
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <map>
+
+namespace btfracture {
+namespace {
+
+// Crack triangles in the support of the given unknowns, sorted.
+std::vector<int> supportOf(const CrackMesh& cracks, const std::vector<int>& unknowns) {
+    std::vector<int> triangles;
+    for (int k : unknowns)
+        for (int t : cracks.trianglesAtNode(cracks.nodeOfUnknown()[k])) triangles.push_back(t);
+    std::sort(triangles.begin(), triangles.end());
+    triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
+    return triangles;
+}
+
+}  // namespace
+
+CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, const CrackMesh& cracks,
+                                                  const std::vector<int>& unknowns) {
+    const SurfaceMesh& mesh = solver.mesh();
+    const int n = mesh.nodeCount(), m = mesh.triangleCount();
+    const double mu = solver.material().shearModulus(), nu = solver.material().poissonRatio();
+    const QuadratureSettings& q = solver.settings().quadrature;
+    std::map<int, int> column;  // crack unknown -> local column
+    for (int i = 0; i < static_cast<int>(unknowns.size()); ++i) column[unknowns[i]] = i;
+    CrackSurfaceCoupling out{Eigen::MatrixXd::Zero(3 * n, 3 * unknowns.size()),
+                             Eigen::MatrixXd::Zero(3 * unknowns.size(), 3 * m)};
+    const std::vector<int> support = supportOf(cracks, unknowns);
+    // Each crack triangle writes only its own unknowns' columns of C and rows of G, but two
+    // support triangles share unknowns: loop over surface triangles in parallel instead, each
+    // writing its own nodes' rows of C (coloured) and its own columns of G.
+    const auto colours = colourTrianglesByNodes(mesh);
+    for (const auto& group : colours) {
+        const int count = static_cast<int>(group.size());
+#pragma omp parallel for schedule(dynamic, 4)
+        for (int g = 0; g < count; ++g) {
+            const int sigma = group[g];
+            const Panel surface = panelOf(mesh, sigma);
+            for (int kappa : support) {
+                const Panel crack = cracks.panel(kappa, n);
+                const PairIntegrals pi = integratePair(surface, crack, q);  // x on the surface, y on the crack
+                const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
+                for (int b = 0; b < 3; ++b) {
+                    const int k = cracks.unknownOf(cracks.triangle(kappa)[b]);
+                    const auto it = column.find(k);
+                    if (k < 0 || it == column.end()) continue;
+                    const int col = 3 * it->second;
+                    const Eigen::Vector3d d = cracks.operatorCurl(kappa, b);
+                    double P[9];
+                    symTimesCross(coeff.L, d.data(), P);
+                    for (int a = 0; a < 3; ++a) {
+                        const Eigen::Vector3d c = mesh.hatCurl(sigma, a);
+                        const int row = 3 * mesh.triangle(sigma)[a];
+                        addStiffnessBlock(c.data(), d.data(), P, mu * coeff.a, 1.0,
+                                          [&](int i, int j, double v) { out.C(row + i, col + j) += v; });
+                    }
+                    // Crack test hat against the traction of sigma (no mass term off the surface).
+                    addLoadBlock(d.data(), coeff, mu, -pi.doubleLayerXY[b],
+                                 [&](int i, int j, double v) { out.G(col + i, 3 * sigma + j) += v; });
+                }
+            }
+        }
+    }
+    return out;
+}
+
+CrackSystem::CrackSystem(const ElasticSolver& solver, CrackMesh& cracks) : solver_(solver), cracks_(cracks) {
+    const int n3 = 3 * solver.mesh().nodeCount(), m3 = 3 * solver.mesh().triangleCount();
+    C_.resize(n3, 0);
+    H_.resize(n3, 0);
+    G_.resize(0, m3);
+    D_.resize(0, 0);
+}
+
+int CrackSystem::update() {
+    cracks_.refreshUnknowns();
+    const int total = cracks_.unknownCount();
+    if (total == assembledUnknowns_) return 0;
+    std::vector<int> fresh(total - assembledUnknowns_);
+    for (int i = 0; i < static_cast<int>(fresh.size()); ++i) fresh[i] = assembledUnknowns_ + i;
+
+    // Surface-crack coupling for the new unknowns: new columns of C and H, new rows of G.
+    const CrackSurfaceCoupling coupling = assembleCrackSurfaceCoupling(solver_, cracks_, fresh);
+    const int old3 = 3 * assembledUnknowns_, new3 = 3 * total;
+    C_.conservativeResize(Eigen::NoChange, new3);
+    C_.rightCols(new3 - old3) = coupling.C;
+    H_.conservativeResize(Eigen::NoChange, new3);
+    H_.rightCols(new3 - old3) = solver_.solveRegularised(solver_.stiffness().transpose() * coupling.C);
+    G_.conservativeResize(new3, Eigen::NoChange);
+    G_.bottomRows(new3 - old3) = coupling.G;
+
+    // Crack-crack block: entries (k, l) with k or l new; old-old entries keep their values.
+    D_.conservativeResize(new3, new3);
+    D_.rightCols(new3 - old3).setZero();
+    D_.bottomRows(new3 - old3).setZero();
+    const SurfaceMesh& mesh = solver_.mesh();
+    const int offset = mesh.nodeCount();
+    const double mu = solver_.material().shearModulus(), nu = solver_.material().poissonRatio();
+    const std::vector<int> support = supportOf(cracks_, fresh);
+    std::vector<char> inSupport(cracks_.triangleCount(), 0);
+    for (int t : support) inSupport[t] = 1;
+    const int first = assembledUnknowns_;
+    // Each unordered pair once (bit-exact symmetry of D); its block and the transposed block.
+    auto addBlock = [&](int kappa, int lambda, const PairCoefficients& coeff, bool transposed) {
+        for (int b = 0; b < 3; ++b) {
+            const int l = cracks_.unknownOf(cracks_.triangle(lambda)[b]);
+            if (l < 0) continue;
+            const Eigen::Vector3d d = cracks_.operatorCurl(lambda, b);
+            double P[9];
+            symTimesCross(coeff.L, d.data(), P);
+            for (int a = 0; a < 3; ++a) {
+                const int k = cracks_.unknownOf(cracks_.triangle(kappa)[a]);
+                if (k < 0 || (k < first && l < first)) continue;
+                const Eigen::Vector3d c = cracks_.operatorCurl(kappa, a);
+                addStiffnessBlock(c.data(), d.data(), P, mu * coeff.a, 1.0, [&](int i, int j, double v) {
+                    if (transposed)
+                        D_(3 * l + j, 3 * k + i) += v;
+                    else
+                        D_(3 * k + i, 3 * l + j) += v;
+                });
+            }
+        }
+    };
+    for (int kappa = 0; kappa < cracks_.triangleCount(); ++kappa)
+        for (int lambda = kappa; lambda < cracks_.triangleCount(); ++lambda) {
+            if (!inSupport[kappa] && !inSupport[lambda]) continue;
+            const PairIntegrals pi =
+                integratePair(cracks_.panel(kappa, offset), cracks_.panel(lambda, offset), solver_.settings().quadrature);
+            const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
+            addBlock(kappa, lambda, coeff, false);
+            if (lambda != kappa) addBlock(kappa, lambda, coeff, true);
+        }
+    assembledUnknowns_ = total;
+    return static_cast<int>(fresh.size());
+}
+
+CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {
+    Solution s;
+    const Eigen::VectorXd b = solver_.displacements(q);  // K_R^-1 K^T F q, checked
+    if (assembledUnknowns_ == 0) {
+        s.displacements = b;
+        s.openings.resize(0);
+        return s;
+    }
+    const Eigen::MatrixXd schur = D_ - C_.transpose() * H_;
+    const Eigen::VectorXd rhs = G_ * q - C_.transpose() * b;
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(schur);
+    s.openings = lu.solve(rhs);
+    const double residual = (schur * s.openings - rhs).norm() / std::max(rhs.norm(), 1e-300);
+    if (!s.openings.allFinite() || residual > 1e-8)
+        throw Error("crack system: Schur complement solve failed (relative residual " + std::to_string(residual) +
+                    "); the crack mesh is probably degenerate");
+    s.displacements = b - H_ * s.openings;
+    return s;
+}
+
+CrackSystem::Solution CrackSystem::solveMonolithic(const Eigen::VectorXd& q) const {
+    const Eigen::MatrixXd& K = solver_.stiffness();
+    const int n3 = static_cast<int>(K.rows()), k3 = 3 * assembledUnknowns_;
+    const Eigen::MatrixXd& T = solver_.regulariser();
+    Eigen::MatrixXd A(n3 + k3, n3 + k3);
+    A.topLeftCorner(n3, n3) = K.transpose() * K + solver_.regularisationWeight() * T.transpose() * T;
+    A.topRightCorner(n3, k3) = K.transpose() * C_;
+    A.bottomLeftCorner(k3, n3) = C_.transpose();
+    A.bottomRightCorner(k3, k3) = D_;
+    Eigen::VectorXd rhs(n3 + k3);
+    rhs.head(n3) = K.transpose() * (solver_.operators().tractionToLoad * q);
+    rhs.tail(k3) = G_ * q;
+    const Eigen::VectorXd x = A.partialPivLu().solve(rhs);
+    return {x.head(n3), x.tail(k3)};
+}
+
+Eigen::VectorXd CrackSystem::nodalOpenings(const Solution& s) const {
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(3 * cracks_.nodeCount());
+    for (int k = 0; k < assembledUnknowns_; ++k) out.segment<3>(3 * cracks_.nodeOfUnknown()[k]) = s.openings.segment<3>(3 * k);
+    return out;
+}
+
+}  // namespace btfracture

@@ -1,0 +1,251 @@
+#include <btFracture/dynamics/BemFractureEngine.h>
+
+#include <btFracture/bem/ElasticSolver.h>
+#include <btFracture/core/Log.h>
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/core/Timer.h>
+#include <btFracture/dynamics/TractionBalance.h>
+#include <btFracture/dynamics/btFractureRigidBody.h>
+#include <btFracture/fracture/FractureSolver.h>
+#include <btFracture/fracture/StressIntensity.h>
+#include <btFracture/geometry/LevelSetBody.h>
+#include <btFracture/geometry/Remesh.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <map>
+
+namespace btfracture {
+namespace {
+
+// Everything one body needs to break, built lazily. Positions live in the "state frame": the
+// body frame of the body the state was first built for; bodyToState maps the frame of the body
+// that now owns it (a fragment that kept or carried it) into that frame.
+class BemFractureState : public FractureState {
+public:
+    Eigen::Isometry3d bodyToState = Eigen::Isometry3d::Identity();
+    std::shared_ptr<LevelSetBody> levelSet;
+    TriangleMesh bemSource;   // closed surface the BEM mesh is remeshed from (state frame)
+    CrackMesh carriedCracks;  // incomplete cracks inherited from a parent (state frame, §5.3)
+    std::unique_ptr<ElasticSolver> solver;            // BEM frame = state frame - solver->mesh().offset()
+    std::unique_ptr<TractionBalancer> balancer;       // on the BEM mesh, BEM frame
+    std::unique_ptr<FractureSolver> fracture;         // borrows *solver
+    std::map<int, int> cutTriangles;                  // crack sheet -> triangles already cut
+};
+
+Eigen::Vector3d toState(const BemFractureState& s, const Eigen::Vector3d& bodyPoint) { return s.bodyToState * bodyPoint; }
+
+Eigen::Isometry3d fragmentFrame(const Eigen::Vector3d& centreOfMass, const Eigen::Matrix3d& inertia) {
+    // The world puts a fragment's body frame at its centre of mass along principalAxes (the same
+    // function), so the fragment's body point x is the parent's R x + c.
+    Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
+    frame.linear() = principalAxes(inertia).rotation;
+    frame.translation() = centreOfMass;
+    return frame;
+}
+
+void buildBem(BemFractureState& s, const btFractureRigidBody& body, const FractureSettings& base, FractureStatistics& stats) {
+    const FractureBodySettings& b = body.settings();
+    TriangleMesh bem = remeshForBem(s.bemSource, b.bemTriangleTarget);
+    bem.name = body.name() + " (BEM)";
+    s.solver = std::make_unique<ElasticSolver>(SurfaceMesh(std::move(bem)), body.material());
+    ++stats.bemBuilds;
+    const SurfaceMesh& mesh = s.solver->mesh();
+    TriangleMesh centred{mesh.nodes(), mesh.triangles(), body.name() + " (BEM)"};
+    s.balancer = std::make_unique<TractionBalancer>(std::move(centred));
+    FractureSettings settings = base;
+    settings.method = b.method;
+    settings.hybridElementThreshold = std::max(1, b.hybridElementThreshold);
+    s.fracture = std::make_unique<FractureSolver>(*s.solver, MaterialField(body.material(), settings.noise), settings);
+    if (s.carriedCracks.triangleCount() > 0) {
+        const Eigen::Vector3d shift = -mesh.offset();
+        s.carriedCracks.refreshUnknowns();
+        std::vector<int> all(s.carriedCracks.sheetCount());
+        for (int i = 0; i < static_cast<int>(all.size()); ++i) all[i] = i;
+        CrackMesh moved = s.carriedCracks.extractSheets(all, shift);
+        s.fracture->cracks() = std::move(moved);
+        s.carriedCracks = CrackMesh();
+    }
+}
+
+// New crack triangles of each sheet since the last cut, plus a strip beyond every front edge
+// whose nodes stopped at the surface, so that the slab reaches the surface (state frame).
+std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
+    CrackMesh& cracks = s.fracture->cracks();
+    cracks.refreshUnknowns();
+    const Eigen::Vector3d offset = s.solver->mesh().offset();
+    std::map<int, TriangleMesh> out;
+    auto vertex = [&](TriangleMesh& m, const Eigen::Vector3d& p) {
+        m.vertices.push_back(p + offset);
+        return static_cast<int>(m.vertices.size()) - 1;
+    };
+    std::map<int, int> seen;
+    for (int t = 0; t < cracks.triangleCount(); ++t) {
+        const int sheet = cracks.sheetOf(t);
+        const int index = seen[sheet]++;
+        if (index < s.cutTriangles[sheet]) continue;
+        TriangleMesh& m = out[sheet];
+        const auto& tri = cracks.triangle(t);
+        m.triangles.push_back({vertex(m, cracks.node(tri[0])), vertex(m, cracks.node(tri[1])), vertex(m, cracks.node(tri[2]))});
+    }
+    for (const auto& [sheet, count] : seen) s.cutTriangles[sheet] = count;
+    const auto frames = displacementCorrelation(cracks, Eigen::VectorXd::Zero(3 * cracks.nodeCount()), s.fracture->solver().material());
+    std::map<int, Eigen::Vector3d> ahead;
+    for (const auto& f : frames) ahead[f.node] = f.frame.ahead;
+    for (const auto& e : cracks.frontEdges()) {
+        const bool stopA = s.fracture->isArrested(e.a), stopB = s.fracture->isArrested(e.b);
+        if (!stopA && !stopB) continue;
+        const Eigen::Vector3d a = cracks.node(e.a), b = cracks.node(e.b);
+        const Eigen::Vector3d a2 = stopA ? Eigen::Vector3d(a + extension * ahead[e.a]) : a;
+        const Eigen::Vector3d b2 = stopB ? Eigen::Vector3d(b + extension * ahead[e.b]) : b;
+        TriangleMesh& m = out[cracks.sheetOf(e.triangle)];
+        const int ia = vertex(m, a), ib = vertex(m, b), ia2 = vertex(m, a2), ib2 = vertex(m, b2);
+        m.triangles.push_back({ia, ib, ib2});
+        m.triangles.push_back({ia, ib2, ia2});
+    }
+    return out;
+}
+
+// A collision mesh usable for a rigid body: closed with a volume of at least a tenth of the
+// level-set volume it stands for.
+bool hasVolume(const TriangleMesh& mesh, double volume) {
+    if (mesh.triangles.size() < 4) return false;
+    double enclosed = 0.0;
+    for (const auto& t : mesh.triangles)
+        enclosed += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]])) / 6.0;
+    return enclosed > 0.1 * volume;
+}
+
+FragmentSpec::Class specClass(FragmentClass c) {
+    switch (c) {
+        case FragmentClass::ConvexHull: return FragmentSpec::Class::ConvexHull;
+        case FragmentClass::Unbreakable: return FragmentSpec::Class::Mesh;
+        case FragmentClass::Breakable: return FragmentSpec::Class::Breakable;
+        case FragmentClass::KeepsParentSolver: return FragmentSpec::Class::KeepsParentSolver;
+    }
+    return FragmentSpec::Class::Mesh;
+}
+
+}  // namespace
+
+BemFractureEngine::BemFractureEngine(const BemFractureEngineSettings& settings) : settings_(settings) {
+    settings_.fracture.validate();
+    settings_.fragments.validate();
+}
+
+double BemFractureEngine::meanCurvature(const btFractureRigidBody& body, const Eigen::Vector3d& bodyPoint) const {
+    const auto* s = dynamic_cast<const BemFractureState*>(body.fractureState());
+    if (!s || !s->levelSet) return FractureEngine::meanCurvature(body, bodyPoint);
+    return s->levelSet->meanCurvature(toState(*s, bodyPoint));
+}
+
+FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
+                                            FractureStatistics& stats) {
+    FractureOutcome outcome;
+    Timer timer;
+    auto* state = dynamic_cast<BemFractureState*>(body.fractureState());
+    if (!state) {
+        auto fresh = std::make_unique<BemFractureState>();
+        fresh->bemSource = body.mesh();
+        state = fresh.get();
+        body.setFractureState(std::move(fresh));
+    }
+    BemFractureState& s = *state;
+    const FractureBodySettings& b = body.settings();
+    if (!s.levelSet) {
+        TriangleMesh source = s.bemSource;
+        source.name = body.name();
+        const double voxel = b.voxelSize > 0.0 ? b.voxelSize : LevelSetBody::defaultVoxelSize(source);
+        s.levelSet = std::make_shared<LevelSetBody>(source, voxel);
+    }
+    outcome.timings.geometry += timer.seconds();
+
+    timer.restart();
+    if (!s.solver) buildBem(s, body, settings_.fracture, stats);
+    // Contacts into the BEM frame, then J n / (t_c A_e) on the nearest triangles, balanced (Eq. 6).
+    std::vector<BodyContact> local = contacts;
+    const Eigen::Vector3d offset = s.solver->mesh().offset();
+    double duration = 0.0;
+    for (BodyContact& c : local) {
+        c.point = toState(s, c.point) - offset;
+        c.direction = s.bodyToState.linear() * c.direction;
+        duration = std::max(duration, c.duration);
+    }
+    const TractionField balanced = s.balancer->balance(s.balancer->contactTractions(local));
+    Eigen::VectorXd q(3 * balanced.size());
+    for (std::size_t t = 0; t < balanced.size(); ++t) q.segment<3>(3 * t) = balanced[t];
+    outcome.timings.bem += timer.seconds();
+
+    timer.restart();
+    const int trianglesBefore = s.fracture->cracks().triangleCount();
+    const FractureEventReport report = s.fracture->run(q, duration);
+    outcome.timings.fracture += timer.seconds() - report.solveSeconds;
+    outcome.timings.bem += report.solveSeconds;
+    if (s.fracture->cracks().triangleCount() == trianglesBefore) return outcome;  // nothing cracked
+
+    timer.restart();
+    double meanSize = 0.0;
+    const SurfaceMesh& mesh = s.solver->mesh();
+    for (int t = 0; t < mesh.triangleCount(); ++t) meanSize += mesh.diameter(t) / mesh.triangleCount();
+    for (const auto& [sheet, cut] : sheetsToCut(s, 0.5 * meanSize + 3.0 * s.levelSet->voxelSize())) {
+        TriangleMesh named = cut;
+        named.name = body.name() + " crack " + std::to_string(sheet);
+        s.levelSet->cutAlongSurface(named, sheet);
+    }
+    FragmentSettings fragmentSettings = settings_.fragments;
+    fragmentSettings.collisionTriangles = b.collisionTriangleTarget;
+    std::vector<Fragment> fragments = s.levelSet->fragments(fragmentSettings);
+    outcome.timings.geometry += timer.seconds();
+    if (fragments.size() < 2) return outcome;  // cracked, not yet apart: the cracks stay for later events
+
+    const double density = body.material().density();
+    const Eigen::Isometry3d parentToState = s.bodyToState;
+    const Eigen::Isometry3d stateToBody = parentToState.inverse();
+    for (Fragment& f : fragments) {
+        FragmentSpec spec;
+        spec.cls = specClass(f.volumeClass);
+        // Geometry is in the state frame; the spec is in the parent's body frame.
+        spec.collisionMesh = spec.cls == FragmentSpec::Class::ConvexHull ? f.convexHull : f.collisionMesh;
+        if (!hasVolume(spec.collisionMesh, f.mass.volume)) {
+            // A sliver whose mesh lost its volume in decimation: its hull, or nothing (logged).
+            if (!hasVolume(f.convexHull, f.mass.volume)) {
+                logf(LogLevel::Info, body.name(), ": fragment ", f.name, " of ", f.mass.volume,
+                     " m^3 has no meshable volume and is dropped");
+                continue;
+            }
+            spec.collisionMesh = f.convexHull;
+            spec.cls = FragmentSpec::Class::ConvexHull;
+        }
+        for (auto& v : spec.collisionMesh.vertices) v = stateToBody * v;
+        spec.volume = f.mass.volume;
+        spec.centreOfMass = stateToBody * f.mass.centreOfMass;
+        const Eigen::Matrix3d R = stateToBody.linear();
+        spec.inertiaAboutCom = density * R * f.mass.inertiaPerDensity * R.transpose();
+        const Eigen::Isometry3d childToParentBody = fragmentFrame(spec.centreOfMass, spec.inertiaAboutCom);
+        if (spec.cls == FragmentSpec::Class::KeepsParentSolver) {
+            // The state moves on with this fragment: its BEM, cracks and its own level set.
+            s.bodyToState = parentToState * childToParentBody;
+            s.levelSet = f.levelSet;
+            s.bemSource = f.surfaceMesh;
+        } else if (spec.cls == FragmentSpec::Class::Breakable) {
+            auto carried = std::make_unique<BemFractureState>();
+            carried->bodyToState = parentToState * childToParentBody;
+            carried->levelSet = f.levelSet;
+            carried->bemSource = f.surfaceMesh;
+            if (!f.incompleteCracks.empty())
+                carried->carriedCracks = s.fracture->cracks().extractSheets(f.incompleteCracks, offset);
+            spec.carriedState = std::move(carried);
+        }
+        outcome.fragments.push_back(std::move(spec));
+    }
+    if (outcome.fragments.size() < 2) {
+        outcome.fragments.clear();
+        return outcome;
+    }
+    logf(LogLevel::Info, body.name(), ": ", report.seeds, " new cracks, ", report.steps.size(), " steps, ",
+         outcome.fragments.size(), " fragments");
+    return outcome;
+}
+
+}  // namespace btfracture

@@ -1,0 +1,40 @@
+#pragma once
+// The physical fracture engine (paper §3-§5): contact impulses -> Hertz tractions balanced by
+// Eq. 6 -> the body's prefactored BEM (built on first need at the body's BEM resolution) ->
+// FractureSolver (initiation, FULL / EST / HYBRID propagation) -> the crack sheets cut into the
+// body's OpenVDB level set -> fragments with their §5.2 classes. Large fragments carry the
+// level set with their incomplete cracks and those cracks' sheets (§5.3); the > 95 % fragment
+// keeps the parent's whole state, BEM included.
+//
+// Limitation: cracks are cut into the level set at BEM resolution (the coarse crack sheet
+// extended to the surface where its front stopped there), not yet by a voxel-resolution front.
+#include <btFracture/core/FractureSettings.h>
+#include <btFracture/dynamics/FractureEngine.h>
+#include <btFracture/geometry/Fragment.h>
+
+namespace btfracture {
+
+struct BemFractureEngineSettings {
+    // Crack initiation and propagation; method and hybrid threshold come from each body's
+    // FractureBodySettings.
+    FractureSettings fracture;
+    // Volume classes; collisionTriangles comes from each body's collisionTriangleTarget.
+    FragmentSettings fragments;
+};
+
+class BemFractureEngine : public FractureEngine {
+public:
+    explicit BemFractureEngine(const BemFractureEngineSettings& settings = {});
+
+    FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
+                             FractureStatistics& stats) override;
+    // Level-set curvature once the body has a level set, the mesh proxy before.
+    double meanCurvature(const btFractureRigidBody& body, const Eigen::Vector3d& bodyPoint) const override;
+
+    const BemFractureEngineSettings& settings() const { return settings_; }
+
+private:
+    BemFractureEngineSettings settings_;
+};
+
+}  // namespace btfracture

@@ -1,0 +1,29 @@
+#pragma once
+// Advancing crack fronts on the BEM crack mesh itself (the coarse sheet; issue 5 adds the
+// voxel-resolution markers): every moving front node gets a new node ahead of it, every front
+// edge a strip of new triangles, and over-long new front edges are split. A front node that
+// would leave the body or cross another crack stops there and is arrested for good (the
+// voxel-resolution front of issue 5 is meant to handle fronts running along a surface).
+#include <btFracture/bem/CrackMesh.h>
+#include <btFracture/bem/SurfaceMesh.h>
+#include <btFracture/fracture/PropagationLaw.h>
+
+#include <map>
+#include <vector>
+
+namespace btfracture {
+
+struct GrowthResult {
+    int advancedNodes = 0;
+    int newTriangles = 0;
+    int arrestedNodes = 0;          // newly arrested in this step
+    std::map<int, double> advanced;  // old front node -> distance it moved [m]
+};
+
+// `advances[node]` holds the motion of each front node (distance 0 = stays). `arrested` (per
+// crack node, grown as needed) marks nodes that never move again. New front edges longer than
+// `maxEdge` [m] are split.
+GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& advances, const SurfaceMesh& body,
+                        double maxEdge, std::vector<char>& arrested);
+
+}  // namespace btfracture

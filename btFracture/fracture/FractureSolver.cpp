@@ -1,0 +1,208 @@
+#include <btFracture/fracture/FractureSolver.h>
+
+#include <btFracture/bem/InteriorStress.h>
+#include <btFracture/bem/SurfaceStress.h>
+#include <btFracture/core/Log.h>
+#include <btFracture/core/Timer.h>
+#include <btFracture/fracture/CrackGrowth.h>
+#include <btFracture/fracture/Initiation.h>
+#include <btFracture/fracture/PropagationLaw.h>
+#include <btFracture/fracture/SifEstimator.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace btfracture {
+
+FractureSolver::FractureSolver(const ElasticSolver& solver, MaterialField field, FractureSettings settings)
+    : solver_(solver), field_(std::move(field)), settings_(settings) {
+    settings_.validate();
+    active_ = settings_.method == FractureMethod::Estimated ? FractureMethod::Estimated : FractureMethod::Full;
+    const SurfaceMesh& mesh = solver_.mesh();
+    for (int t = 0; t < mesh.triangleCount(); ++t) meanSize_ += mesh.diameter(t) / mesh.triangleCount();
+    seeded_.assign(mesh.triangleCount(), 0);
+    crackLoad_ = Eigen::VectorXd::Zero(3 * mesh.nodeCount());
+}
+
+FractureSolver::~FractureSolver() = default;
+
+void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
+    cracks_.refreshUnknowns();  // cracks may have been added from outside (pre-cracks, carried cracks)
+    arrested_.resize(cracks_.nodeCount(), 0);
+    tractions_ = q;
+    load_ = solver_.operators().tractionToLoad * q;
+    solver_.netLoad(q);  // validates size
+    if (settings_.method == FractureMethod::Hybrid && active_ == FractureMethod::Full &&
+        meshElements() >= settings_.hybridElementThreshold)
+        switchToEstimator();
+    if (active_ == FractureMethod::Full) {
+        if (!full_) full_ = std::make_unique<CrackSystem>(solver_, cracks_);
+        full_->update();
+        const CrackSystem::Solution s = full_->solve(q);
+        displacements_ = s.displacements;
+        solvedOpenings_ = full_->nodalOpenings(s);
+    } else {
+        // EST: one crack-free solve per event; existing cracks are re-estimated as fronts move.
+        crackLoad_.setZero();
+        estimatedOpenings_ = Eigen::VectorXd::Zero(3 * cracks_.nodeCount());
+        displacements_ = solver_.displacements(q);
+    }
+}
+
+int FractureSolver::seed() {
+    const Material& m = field_.material();
+    const auto stresses =
+        surfaceStresses(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), displacements_, tractions_);
+    const auto candidates = findSeedCandidates(solver_.mesh(), stresses, field_, cracks_, seeded_);
+    const int seeds =
+        seedCracks(cracks_, solver_.mesh(), candidates, settings_.maxNewCracksPerEvent, settings_.seedRadius, seeded_);
+    arrested_.resize(cracks_.nodeCount(), 0);
+    if (seeds > 0) {
+        cracks_.refreshUnknowns();
+        if (active_ == FractureMethod::Full) {
+            full_->update();
+            const CrackSystem::Solution s = full_->solve(tractions_);
+            displacements_ = s.displacements;
+            solvedOpenings_ = full_->nodalOpenings(s);
+        } else {
+            const Eigen::Index oldSize = estimatedOpenings_.size();
+            estimatedOpenings_.conservativeResize(3 * cracks_.nodeCount());
+            estimatedOpenings_.tail(estimatedOpenings_.size() - oldSize).setZero();
+        }
+    }
+    return seeds;
+}
+
+std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
+    const Material& m = field_.material();
+    auto skip = [&](const FrontSifs& f) { return activeOnly && isArrested(f.node); };
+    if (active_ == FractureMethod::Full) {
+        std::vector<FrontSifs> all = displacementCorrelation(cracks_, solvedOpenings_, m);
+        all.erase(std::remove_if(all.begin(), all.end(), skip), all.end());
+        return all;
+    }
+    // EST: frames from the crack geometry, SIFs from the surface-only local stress (§4.2).
+    std::vector<FrontSifs> frames = displacementCorrelation(cracks_, Eigen::VectorXd::Zero(3 * cracks_.nodeCount()), m);
+    const StressEvaluator stress(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), displacements_, tractions_);
+    std::vector<FrontSifs> out;
+    out.reserve(frames.size());
+    for (const FrontSifs& f : frames) {
+        if (skip(f)) continue;
+        double area = 0.0;
+        if (!cracks_.trianglesAtNode(f.node).empty()) area = cracks_.sheetArea(cracks_.trianglesAtNode(f.node)[0]);
+        FrontSifs e = estimateSifs(f.frame, stress.stressAt(f.position), area, m.compressiveFactor(),
+                                   settings_.estimatorGeometryFactor);
+        e.node = f.node;
+        e.position = f.position;
+        e.spacing = f.spacing;
+        out.push_back(e);
+    }
+    return out;
+}
+
+FractureStepRecord FractureSolver::step(int index) {
+    FractureStepRecord record;
+    record.step = index;
+    if (settings_.method == FractureMethod::Hybrid && active_ == FractureMethod::Full &&
+        meshElements() >= settings_.hybridElementThreshold)
+        switchToEstimator();
+    record.method = active_;
+    Timer timer;
+    arrested_.resize(cracks_.nodeCount(), 0);
+    const std::vector<FrontSifs> sifs = frontSifs(true);
+    record.sifSeconds = timer.seconds();
+    record.frontNodes = static_cast<int>(sifs.size());
+
+    timer.restart();
+    const Material& m = field_.material();
+    std::map<int, FrontAdvance> advances;
+    for (const FrontSifs& f : sifs) {
+        const double Kc = field_.fractureToughness(f.position) * (f.compressive ? m.compressiveFactor() : 1.0);
+        record.maxLoadRatio = std::max(record.maxLoadRatio, effectiveK(f.KI, f.KII, f.KIII, m.poissonRatio()) / Kc);
+        advances[f.node] = advanceOf(f, field_.fractureToughness(f.position), m.compressiveFactor(), m.poissonRatio(),
+                                     settings_.frontEdgeLength * meanSize_, settings_.minimumSpeed);
+    }
+    const GrowthResult growth =
+        growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * meanSize_, arrested_);
+    record.advancedNodes = growth.advancedNodes;
+    record.arrestedNodes = growth.arrestedNodes;
+    if (growth.advancedNodes > 0) updateFrontState(sifs, growth.advanced);
+    record.growthSeconds = timer.seconds();
+    record.crackTriangles = cracks_.triangleCount();
+    return record;
+}
+
+void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs, const std::map<int, double>& advanced) {
+    const std::vector<int> fresh = cracks_.refreshUnknowns();
+    if (active_ == FractureMethod::Full) {
+        full_->update();
+        const CrackSystem::Solution s = full_->solve(tractions_);
+        displacements_ = s.displacements;
+        solvedOpenings_ = full_->nodalOpenings(s);
+        return;
+    }
+    // EST (§4.3): the nodes the front just left get the opening that inverting the displacement
+    // correlation gives, and their crack-surface coupling C (never stored) corrects the load.
+    const Eigen::Index oldSize = estimatedOpenings_.size();
+    estimatedOpenings_.conservativeResize(3 * cracks_.nodeCount());
+    estimatedOpenings_.tail(estimatedOpenings_.size() - oldSize).setZero();
+    std::vector<int> unknowns;
+    Eigen::VectorXd cod(3 * fresh.size());
+    for (std::size_t i = 0; i < fresh.size(); ++i) {
+        const int node = fresh[i];
+        Eigen::Vector3d opening = Eigen::Vector3d::Zero();
+        const auto moved = advanced.find(node);
+        const auto f = std::find_if(sifs.begin(), sifs.end(), [node](const FrontSifs& s) { return s.node == node; });
+        if (moved != advanced.end() && f != sifs.end()) opening = openingFromSifs(*f, moved->second, field_.material());
+        estimatedOpenings_.segment<3>(3 * node) = opening;
+        unknowns.push_back(cracks_.unknownOf(node));
+        cod.segment<3>(3 * i) = opening;
+    }
+    if (!settings_.estimatorUpdate || unknowns.empty()) return;
+    const CrackSurfaceCoupling coupling = assembleCrackSurfaceCoupling(solver_, cracks_, unknowns);
+    crackLoad_ += coupling.C * cod;
+    displacements_ = solver_.displacementsFromLoad(load_ - crackLoad_);
+}
+
+void FractureSolver::switchToEstimator() {
+    // Keep what FULL knew: the crack load C cod of the current openings; then drop D.
+    if (full_ && cracks_.unknownCount() > 0) {
+        Eigen::VectorXd cod(3 * cracks_.unknownCount());
+        for (int k = 0; k < cracks_.unknownCount(); ++k) cod.segment<3>(3 * k) = solvedOpenings_.segment<3>(3 * cracks_.nodeOfUnknown()[k]);
+        crackLoad_ = full_->surfaceCrackBlock() * cod;
+        estimatedOpenings_ = solvedOpenings_;
+    }
+    full_.reset();
+    active_ = FractureMethod::Estimated;
+    logf(LogLevel::Info, "fracture: HYBRID switched to the estimator at ", meshElements(), " BEM elements");
+}
+
+Eigen::VectorXd FractureSolver::nodalOpenings() const {
+    Eigen::VectorXd out = active_ == FractureMethod::Full ? solvedOpenings_ : estimatedOpenings_;
+    out.conservativeResize(3 * cracks_.nodeCount());
+    return out;
+}
+
+FractureEventReport FractureSolver::run(const Eigen::VectorXd& q, double contactDuration) {
+    FractureEventReport report;
+    Timer timer;
+    const bool wasFull = active_ == FractureMethod::Full;
+    beginEvent(q);
+    report.seeds = seed();
+    report.solveSeconds = timer.seconds();
+    // Budget: the contact time at the Rayleigh speed, one element per step (FractureRB).
+    int budget = settings_.maxStepsPerEvent;
+    if (contactDuration > 0.0) {
+        const double steps = contactDuration * field_.material().rayleighWaveSpeed() / (settings_.frontEdgeLength * meanSize_);
+        budget = std::min(budget, std::max(1, static_cast<int>(std::lround(steps))));
+    }
+    for (int i = 0; i < budget && !cracks_.frontEdges().empty(); ++i) {
+        const FractureStepRecord r = step(i);
+        report.steps.push_back(r);
+        if (r.advancedNodes == 0) break;
+    }
+    report.switchedToEstimator = wasFull && active_ == FractureMethod::Estimated;
+    return report;
+}
+
+}  // namespace btfracture

@@ -1,0 +1,91 @@
+#pragma once
+// One body's fracture simulation (paper §3-4): per event, seed cracks where the surface stress
+// exceeds the strength, then step the fronts - SIFs (FULL: Eq. 4 and displacement correlation;
+// EST: local stress, §4.2, with the right-hand-side update of §4.3), propagation direction and
+// speed, growth of the crack sheets - until every front arrests or the step budget (the contact
+// duration at crack speed, and a cap) is used. HYBRID starts FULL and switches to EST for good
+// once the BEM mesh (surface + crack triangles) reaches the threshold (§4.4).
+#include <btFracture/bem/CrackMesh.h>
+#include <btFracture/bem/CrackSystem.h>
+#include <btFracture/bem/ElasticSolver.h>
+#include <btFracture/core/FractureSettings.h>
+#include <btFracture/fracture/MaterialField.h>
+#include <btFracture/fracture/StressIntensity.h>
+
+#include <Eigen/Core>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace btfracture {
+
+struct FractureStepRecord {
+    int step = 0;
+    FractureMethod method = FractureMethod::Full;  // Full or Estimated
+    int frontNodes = 0, advancedNodes = 0, arrestedNodes = 0;
+    int crackTriangles = 0;        // after the step
+    double maxLoadRatio = 0.0;     // max K_eff / K_c over the front before the step
+    double sifSeconds = 0.0, growthSeconds = 0.0;
+};
+
+struct FractureEventReport {
+    int seeds = 0;
+    bool switchedToEstimator = false;
+    double solveSeconds = 0.0;  // crack-free solve and surface stress at the event start
+    std::vector<FractureStepRecord> steps;
+};
+
+class FractureSolver {
+public:
+    // Borrows `solver` (the body's prefactored BEM), which must outlive this object.
+    FractureSolver(const ElasticSolver& solver, MaterialField field, FractureSettings settings);
+    ~FractureSolver();
+
+    CrackMesh& cracks() { return cracks_; }
+    const CrackMesh& cracks() const { return cracks_; }
+    const ElasticSolver& solver() const { return solver_; }
+    const FractureSettings& settings() const { return settings_; }
+    // The method the next step uses: Full or Estimated (HYBRID resolved by the mesh size).
+    FractureMethod activeMethod() const { return active_; }
+
+    // A whole event for P0 tractions q (3m [Pa], balanced) acting for `contactDuration` [s]
+    // (<= 0: only the step cap limits propagation).
+    FractureEventReport run(const Eigen::VectorXd& tractions, double contactDuration);
+
+    // The pieces of run(), for tests and benchmarks:
+    void beginEvent(const Eigen::VectorXd& tractions);  // crack-free / current solve, stresses
+    int seed();                                          // initiation; returns new seeds
+    // SIFs of the active method now; with activeOnly, arrested front nodes are left out (EST then
+    // evaluates the local stress only where the front can still move: cost ~ active front).
+    std::vector<FrontSifs> frontSifs(bool activeOnly = false);
+    FractureStepRecord step(int index);                  // one propagation step
+
+    // Front nodes that stopped for good (reached the surface head-on or met another crack).
+    bool isArrested(int node) const { return node < static_cast<int>(arrested_.size()) && arrested_[node]; }
+
+    // Surface displacements of the current state (FULL: Eq. 4 solution; EST: updated, §4.3).
+    const Eigen::VectorXd& displacements() const { return displacements_; }
+    // COD at every crack node (FULL: solved; EST: estimated when the node left the front).
+    Eigen::VectorXd nodalOpenings() const;
+
+private:
+    void updateFrontState(const std::vector<FrontSifs>& sifs, const std::map<int, double>& advanced);
+    void switchToEstimator();
+    int meshElements() const { return solver_.mesh().triangleCount() + cracks_.triangleCount(); }
+
+    const ElasticSolver& solver_;
+    MaterialField field_;
+    FractureSettings settings_;
+    CrackMesh cracks_;
+    std::unique_ptr<CrackSystem> full_;  // FULL mode only
+    FractureMethod active_;
+    double meanSize_ = 0.0;              // mean BEM triangle diameter h [m]
+    Eigen::VectorXd tractions_, load_, crackLoad_, displacements_;
+    Eigen::VectorXd estimatedOpenings_;  // EST: per crack node, 3 each
+    Eigen::VectorXd solvedOpenings_;     // FULL: per crack node, 3 each
+    std::vector<char> arrested_;         // per crack node
+    std::vector<char> seeded_;           // per surface triangle
+};
+
+}  // namespace btfracture

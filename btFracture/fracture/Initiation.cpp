@@ -1,0 +1,86 @@
+#include <btFracture/fracture/Initiation.h>
+
+#include <btFracture/core/Intersection.h>
+#include <btFracture/core/Log.h>
+#include <btFracture/fracture/CrackSeed.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace btfracture {
+namespace {
+
+double distanceToFront(const CrackMesh& cracks, const Eigen::Vector3d& x) {
+    double best = INFINITY;
+    for (const auto& e : cracks.frontEdges()) best = std::min({best, (cracks.node(e.a) - x).norm(), (cracks.node(e.b) - x).norm()});
+    return best;
+}
+
+}  // namespace
+
+std::vector<SeedCandidate> findSeedCandidates(const SurfaceMesh& mesh, const std::vector<Eigen::Matrix3d>& stresses,
+                                              const MaterialField& field, const CrackMesh& cracks,
+                                              const std::vector<char>& blocked) {
+    const double factor = field.material().compressiveFactor();
+    std::vector<SeedCandidate> out;
+    for (int t = 0; t < mesh.triangleCount(); ++t) {
+        if (blocked[t]) continue;
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(stresses[t]);
+        const double strength = field.tensileStrength(mesh.centroid(t));
+        const double tensile = eig.eigenvalues()[2] / strength;
+        const double compressive = -eig.eigenvalues()[0] / (factor * strength);
+        if (std::max(tensile, compressive) <= 1.0) continue;
+        if (distanceToFront(cracks, mesh.centroid(t)) < mesh.diameter(t)) continue;
+        SeedCandidate c;
+        c.triangle = t;
+        c.compressive = compressive > tensile;
+        c.excess = std::max(tensile, compressive);
+        c.crackNormal = eig.eigenvectors().col(c.compressive ? 0 : 2);
+        out.push_back(c);
+    }
+    std::stable_sort(out.begin(), out.end(), [](const SeedCandidate& a, const SeedCandidate& b) { return a.excess > b.excess; });
+    return out;
+}
+
+int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<SeedCandidate>& candidates, int maxSeeds,
+               double seedRadius, std::vector<char>& blocked) {
+    int seeds = 0;
+    std::vector<Eigen::Vector3d> seededAt;
+    for (const SeedCandidate& c : candidates) {
+        if (seeds >= maxSeeds) break;
+        const Eigen::Vector3d& surfaceNormal = mesh.normal(c.triangle);
+        const Eigen::Vector3d x = mesh.centroid(c.triangle);
+        const double h = mesh.diameter(c.triangle);
+        if (std::any_of(seededAt.begin(), seededAt.end(), [&](const Eigen::Vector3d& p) { return (p - x).norm() < h; })) continue;
+        // Inward direction within the crack plane.
+        Eigen::Vector3d inward = -(surfaceNormal - surfaceNormal.dot(c.crackNormal) * c.crackNormal);
+        if (inward.norm() < 0.3) {  // crack plane within ~17 degrees of the surface: no seed
+            logf(LogLevel::Debug, "initiation: triangle ", c.triangle, " skipped, crack plane parallel to the surface");
+            continue;
+        }
+        inward.normalize();
+        const double r = seedRadius * h;
+        const Eigen::Vector3d centre = x + (1.05 * r) * inward;
+        // Rotate the hexagon so that one vertex points at the surface point.
+        const Eigen::Vector3d u = c.crackNormal.unitOrthogonal(), v = c.crackNormal.cross(u);
+        const double rotation = std::atan2((-inward).dot(v), (-inward).dot(u));
+        CrackMesh trial = cracks;
+        addDiscCrack(trial, centre, c.crackNormal, r, 1, rotation);
+        bool inside = true;
+        for (int i = cracks.nodeCount(); i < trial.nodeCount() && inside; ++i)
+            inside = windingNumber(mesh.nodes(), mesh.triangles(), trial.node(i)) > 0.5;
+        if (!inside) {
+            logf(LogLevel::Debug, "initiation: triangle ", c.triangle, " skipped, seed would leave the body");
+            continue;
+        }
+        cracks = std::move(trial);
+        blocked[c.triangle] = 1;
+        seededAt.push_back(x);
+        ++seeds;
+    }
+    return seeds;
+}
+
+}  // namespace btfracture

@@ -1,0 +1,38 @@
+#pragma once
+// Crack initiation (paper §3, Hahn & Wojtan 2015): where the largest principal surface stress
+// exceeds the local tensile strength, or the most negative exceeds compressive factor x
+// strength, a small hexagonal crack is seeded perpendicular to that principal direction, just
+// under the surface and reaching inwards.
+#include <btFracture/bem/CrackMesh.h>
+#include <btFracture/bem/SurfaceMesh.h>
+#include <btFracture/core/FractureSettings.h>
+#include <btFracture/fracture/MaterialField.h>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace btfracture {
+
+struct SeedCandidate {
+    int triangle = -1;
+    double excess = 0.0;              // principal stress / its strength, > 1
+    Eigen::Vector3d crackNormal;      // principal direction (unit)
+    bool compressive = false;
+};
+
+// Triangles whose principal stress exceeds the strength, most overloaded first. Skips
+// triangles in `blocked` and those closer to an existing front node than their longest edge.
+std::vector<SeedCandidate> findSeedCandidates(const SurfaceMesh& mesh, const std::vector<Eigen::Matrix3d>& stresses,
+                                              const MaterialField& field, const CrackMesh& cracks,
+                                              const std::vector<char>& blocked);
+
+// Adds up to `maxSeeds` hexagonal seeds for the candidates (circumradius seedRadius x the
+// triangle's diameter); a candidate whose crack plane is nearly parallel to the surface, or
+// whose seed would poke out of the body, is skipped with a log line. Seeds of one event keep
+// the distance rule among themselves too. Marks seeded triangles in `blocked`. Returns the
+// number of seeds.
+int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<SeedCandidate>& candidates,
+               int maxSeeds, double seedRadius, std::vector<char>& blocked);
+
+}  // namespace btfracture

@@ -1,0 +1,71 @@
+#include <btFracture/fracture/SifEstimator.h>
+
+#include <btFracture/fracture/PropagationLaw.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+
+namespace btfracture {
+namespace {
+
+// Kink theta that turns the crack normal n towards +-v within the (m, n) plane, and whether
+// it is admissible (cos theta >= 1/3, about 70.5 degrees).
+bool kinkTowards(const FrontFrame& f, const Eigen::Vector3d& v, double& theta) {
+    double vm = v.dot(f.ahead), vn = v.dot(f.normal);
+    if (vn < 0.0) vm = -vm, vn = -vn;  // either sign of the eigenvector
+    const double inPlane = std::hypot(vm, vn);
+    if (inPlane < 1e-9) return false;
+    // New normal after kinking by theta: cos(theta) n - sin(theta) m.
+    theta = std::atan2(-vm, vn);
+    return std::cos(theta) >= 1.0 / 3.0;
+}
+
+}  // namespace
+
+EstimatorChoice chooseEigenvector(const FrontFrame& frame, const Eigen::Matrix3d& stress, double compressiveFactor) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(stress);  // ascending eigenvalues
+    const Eigen::Vector3d values = eig.eigenvalues();
+    EstimatorChoice choice;
+    double theta = 0.0;
+    auto take = [&](int i) {
+        choice.eigenvector = i;
+        choice.eigenvalue = values[i];
+        choice.kink = theta;
+        choice.compressive = values[i] < 0.0;
+    };
+    if (kinkTowards(frame, eig.eigenvectors().col(2), theta)) {
+        take(2);
+        return choice;
+    }
+    // Second largest against the most negative (scaled by the compressive toughness ratio).
+    const bool negative = values[0] < 0.0;
+    const double second = std::abs(values[1]), compressive = negative ? std::abs(values[0]) / compressiveFactor : -1.0;
+    const int first = compressive > second ? 0 : 1, other = first == 0 ? 1 : 0;
+    if (kinkTowards(frame, eig.eigenvectors().col(first), theta)) {
+        take(first);
+    } else if (kinkTowards(frame, eig.eigenvectors().col(other), theta)) {
+        take(other);
+    } else {  // numerically borderline: fall back to the largest eigenvalue without kinking
+        theta = 0.0;
+        take(2);
+    }
+    return choice;
+}
+
+FrontSifs estimateSifs(const FrontFrame& frame, const Eigen::Matrix3d& stress, double crackArea,
+                       double compressiveFactor, double k) {
+    FrontSifs f;
+    f.frame = frame;
+    const EstimatorChoice choice = chooseEigenvector(frame, stress, compressiveFactor);
+    const double scale = k * std::pow(M_PI * crackArea, 0.25);
+    const double r = modeRatioForKink(choice.kink);
+    const double magnitude = std::abs(choice.eigenvalue) * scale / (choice.compressive ? compressiveFactor : 1.0);
+    f.KI = magnitude / std::sqrt(1.0 + r * r);
+    f.KII = r * f.KI;
+    f.KIII = scale * frame.tangent.dot(stress * frame.normal);
+    f.compressive = choice.compressive;
+    return f;
+}
+
+}  // namespace btfracture

@@ -1,0 +1,72 @@
+#pragma once
+// What a run records about fracture: the fragments' names and volumes (a ledger of every body
+// that came from breaking an original scene body), the statistics CSV, and at the end the
+// fragment-volume histogram against Mott's distribution.
+//
+// The fracture world's listener calls record() once per event; nothing else needs to know how
+// fragments are named or where the statistics go.
+#include <btFracture/io/StatisticsCsv.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace btfracture {
+
+class FractureRecorder {
+public:
+    // `statisticsCsv`: path of the statistics CSV, or empty for none.
+    explicit FractureRecorder(const std::string& statisticsCsv = "");
+
+    // A scene body that may break, with its volume [m^3].
+    void addOriginal(const std::string& name, double volume);
+
+    // One fracture event: `record.body` (an original or an earlier fragment) broke into pieces of
+    // `fragmentVolumes` [m^3]. Names the pieces "<original>_f<k>", k counting from 1 per original
+    // body in creation order (so names are stable from frame to frame and run to run), fills
+    // record.fragments with them, writes the CSV row and returns the names. Throws
+    // btfracture::Error for an unknown body or a non-positive volume.
+    std::vector<std::string> record(FractureEventRecord record, const std::vector<double>& fragmentVolumes);
+
+    struct Fragment {
+        std::string name, original;
+        double volume = 0.0;          // [m^3]
+        double relativeVolume = 0.0;  // volume / the original's volume
+        int generation = 1;           // 1: broke off the original, 2: off a generation-1 fragment, ...
+    };
+    // Fragments that have not broken again, in creation order.
+    std::vector<Fragment> fragments() const;
+
+    int events() const { return events_; }
+    double fractureSeconds() const { return fractureSeconds_; }  // summed record.fractureSeconds
+    double swapSeconds() const { return swapSeconds_; }          // summed record.swapSeconds
+
+    // Writes `prefix`.csv (and `prefix`.png when `png`) with the current fragments' relative
+    // volumes against Mott's distribution (io/MottHistogram.h), and `fragmentsCsv` listing them
+    // (name,original,generation,volume_m3,relative_volume). Returns false, writing nothing, when
+    // there are no fragments.
+    bool writeFragmentVolumes(const std::string& prefix, const std::string& fragmentsCsv, bool png) const;
+
+    // Closes the statistics CSV (throws Error naming the path when writing failed).
+    void close();
+
+private:
+    struct Piece {
+        std::string original;
+        double volume = 0.0;
+        int generation = 0;
+        bool broken = false;
+        size_t order = 0;  // creation order
+    };
+    std::unique_ptr<StatisticsCsv> csv_;
+    std::map<std::string, Piece> pieces_;      // originals and fragments by name
+    std::map<std::string, double> originals_;  // original volumes
+    std::map<std::string, int> nextIndex_;     // per original: k of its next fragment
+    size_t created_ = 0;
+    int events_ = 0;
+    double fractureSeconds_ = 0.0, swapSeconds_ = 0.0;
+};
+
+}  // namespace btfracture

@@ -1,0 +1,42 @@
+#pragma once
+// Connects a btFractureDynamicsWorld to a FractureRecorder: every fracture event the world
+// reports becomes a statistics row, and its fragments get the recorder's stable names
+// ("bunny_f3"), which nameOf() gives to the outputs (the world's own fragment names differ).
+//
+//   FractureRecorder recorder(dir + "/statistics.csv");
+//   FractureRecorderListener listener(recorder, dt);
+//   listener.addOriginal(*bunny, "bunny");
+//   world.addFractureListener(&listener);
+#include <btFracture/dynamics/FractureListener.h>
+#include <btFracture/io/FractureRecorder.h>
+
+#include <map>
+#include <string>
+
+class btCollisionObject;
+
+namespace btfracture {
+
+class FractureRecorderListener : public FractureListener {
+public:
+    // `stepLength`: the world's fixed internal step [s] (event time = step index x stepLength).
+    FractureRecorderListener(FractureRecorder& recorder, double stepLength);
+
+    // A breakable scene body and its output name (recorder.addOriginal with its volume).
+    void addOriginal(const btFractureRigidBody& body, const std::string& name);
+
+    // Fields of FractureEventRecord the world's FractureEventInfo does not carry yet are left at
+    // 0: contactDuration and crackTriangles. method is the body's method setting.
+    void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
+                         const FractureEventInfo& info) override;
+
+    // The output name of a body added with addOriginal or created by fracture; empty for others.
+    std::string nameOf(const btCollisionObject* body) const;
+
+private:
+    FractureRecorder& recorder_;
+    double stepLength_;
+    std::map<const btCollisionObject*, std::string> names_;
+};
+
+}  // namespace btfracture

@@ -1,0 +1,173 @@
+// Cracks in the BEM: Schur complement against the monolithic system, incremental against
+// from-scratch assembly, and FULL stress intensity factors of penny-shaped cracks against the
+// closed-form solutions (validation.md (a)).
+#include <btFracture/bem/CrackSystem.h>
+#include <btFracture/bem/InteriorStress.h>
+#include <btFracture/core/Primitives.h>
+#include <btFracture/fracture/CrackSeed.h>
+#include <btFracture/fracture/StressIntensity.h>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace btfracture;
+
+namespace {
+
+const Material kMaterial(1e9, 0.3, 1000.0, 1e7, 1e6, 2.0, "test");
+
+Eigen::VectorXd uniformStressTractions(const SurfaceMesh& mesh, const Eigen::Matrix3d& sigma) {
+    Eigen::VectorXd q(3 * mesh.triangleCount());
+    for (int t = 0; t < mesh.triangleCount(); ++t) q.segment<3>(3 * t) = sigma * mesh.normal(t);
+    return q;
+}
+
+}  // namespace
+
+TEST(CrackSystem, SchurMatchesMonolithicAndIncrementalMatchesScratch) {
+    const ElasticSolver solver(SurfaceMesh(makeBox({0.4, 0.4, 0.4}, 4, 4, 4)), kMaterial);
+    Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
+    sigma(2, 2) = 1e6;
+    sigma(0, 2) = sigma(2, 0) = 3e5;
+    const Eigen::VectorXd q = uniformStressTractions(solver.mesh(), sigma);
+
+    // The same two-ring disc, once assembled from scratch and once grown: first only the
+    // inner hexagon (one unknown, its centre), then the outer ring of triangles (six more).
+    CrackMesh scratchCracks;
+    CrackSystem scratch(solver, scratchCracks);
+    addDiscCrack(scratch.cracks(), Eigen::Vector3d(0.02, -0.01, 0.03), Eigen::Vector3d(0.1, 0.2, 1.0), 0.1, 2);
+    scratch.update();
+    CrackMesh grownCracks;
+    CrackSystem grown(solver, grownCracks);
+    const CrackMesh& full = scratch.cracks();
+    for (int i = 0; i < full.nodeCount(); ++i) grown.cracks().addNode(full.node(i));
+    for (int t = 0; t < 6; ++t) grown.cracks().addTriangle(full.triangle(t)[0], full.triangle(t)[1], full.triangle(t)[2]);
+    EXPECT_EQ(grown.update(), 1);
+    for (int t = 6; t < full.triangleCount(); ++t)
+        grown.cracks().addTriangle(full.triangle(t)[0], full.triangle(t)[1], full.triangle(t)[2]);
+    EXPECT_EQ(grown.update(), 6);
+    ASSERT_EQ(grown.cracks().unknownCount(), scratch.cracks().unknownCount());
+
+    // Same geometry, same numbering of nodes and unknowns: blocks agree entry by entry.
+    const double scaleC = scratch.surfaceCrackBlock().cwiseAbs().maxCoeff();
+    EXPECT_LT((grown.surfaceCrackBlock() - scratch.surfaceCrackBlock()).cwiseAbs().maxCoeff(), 1e-12 * scaleC);
+    const double scaleD = scratch.crackCrackBlock().cwiseAbs().maxCoeff();
+    EXPECT_LT((grown.crackCrackBlock() - scratch.crackCrackBlock()).cwiseAbs().maxCoeff(), 1e-12 * scaleD);
+    // D is symmetric (Galerkin hypersingular operator on the crack).
+    EXPECT_LT((scratch.crackCrackBlock() - scratch.crackCrackBlock().transpose()).cwiseAbs().maxCoeff(), 1e-9 * scaleD);
+
+    const CrackSystem::Solution schur = scratch.solve(q);
+    const CrackSystem::Solution mono = scratch.solveMonolithic(q);
+    EXPECT_LT((schur.openings - mono.openings).norm(), 1e-8 * mono.openings.norm());
+    EXPECT_LT((schur.displacements - mono.displacements).norm(), 1e-8 * mono.displacements.norm());
+    // Under tension normal to it the crack opens: positive normal COD at the centre.
+    EXPECT_GT(schur.openings.segment<3>(0).dot(Eigen::Vector3d(0.1, 0.2, 1.0).normalized()), 0.0);
+}
+
+TEST(CrackSystem, PennyCrackUnderTension) {
+    // Penny crack of radius a centred in a cube of side 8a, uniaxial tension sigma normal to it,
+    // four rings of elements (h = a / 4). Displacement correlation with P1 openings is biased
+    // high by a few per cent and peaks where the hexagonal disc mesh is most stretched (see the
+    // closing notes: +1.5 % mean / 3.6 % worst here, +2.5 % / 5.7 % at six rings).
+    const double a = 0.05, s = 1e6;
+    const ElasticSolver solver(SurfaceMesh(makeBox({4 * a, 4 * a, 4 * a}, 6, 6, 6)), kMaterial);
+    CrackMesh cracks;
+    CrackSystem system(solver, cracks);
+    addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), a, 4);
+    system.update();
+    Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
+    sigma(2, 2) = s;
+    const CrackSystem::Solution sol = system.solve(uniformStressTractions(solver.mesh(), sigma));
+    const auto sifs = displacementCorrelation(system.cracks(), system.nodalOpenings(sol), kMaterial);
+    const double exact = 2.0 * s * std::sqrt(a / M_PI);
+    double mean = 0.0, worst = 0.0, shear = 0.0;
+    for (const auto& f : sifs) {
+        mean += f.KI / sifs.size();
+        worst = std::max(worst, std::abs(f.KI / exact - 1.0));
+        shear = std::max({shear, std::abs(f.KII), std::abs(f.KIII)});
+    }
+    std::printf("penny: %zu front nodes, K_I mean %.4f of exact, worst node %.2f %%, max |K_II|,|K_III| %.2f %% of K_I\n",
+                sifs.size(), mean / exact, 100 * worst, 100 * shear / exact);
+    EXPECT_NEAR(mean / exact, 1.0, 0.03);
+    EXPECT_LT(worst, 0.06);
+    EXPECT_LT(shear / exact, 0.03);
+}
+
+TEST(CrackSystem, InclinedPennyCrackMatchesKassirSih) {
+    // Crack plane at alpha = 45 degrees to the load (validation.md (a), Code_Aster V6.04.159):
+    // K_I = 2/pi s sin^2(a) sqrt(pi a), K_II = 4/(pi (2 - nu)) s sin cos cos(w) sqrt(pi a),
+    // K_III = 4 (1 - nu)/(pi (2 - nu)) s sin cos sin(w) sqrt(pi a), w measured from the in-plane
+    // direction of the load. Errors relative to each mode's amplitude.
+    const double a = 0.05, s = 1e6, nu = kMaterial.poissonRatio(), alpha = M_PI / 4;
+    const ElasticSolver solver(SurfaceMesh(makeBox({4 * a, 4 * a, 4 * a}, 6, 6, 6)), kMaterial);
+    const Eigen::Vector3d normal(std::sin(alpha), 0.0, std::cos(alpha));
+    CrackMesh cracks;
+    CrackSystem system(solver, cracks);
+    addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), normal, a, 4);
+    system.update();
+    Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
+    sigma(2, 2) = s;
+    const CrackSystem::Solution sol = system.solve(uniformStressTractions(solver.mesh(), sigma));
+    const auto sifs = displacementCorrelation(system.cracks(), system.nodalOpenings(sol), kMaterial);
+    const Eigen::Vector3d e1 = (Eigen::Vector3d::UnitZ() - normal.z() * normal).normalized(), e2 = normal.cross(e1);
+    const double root = std::sqrt(M_PI * a), sc = std::sin(alpha) * std::cos(alpha);
+    const double KI = 2.0 / M_PI * s * std::sin(alpha) * std::sin(alpha) * root;
+    const double KIIamp = 4.0 / (M_PI * (2.0 - nu)) * s * sc * root;
+    const double KIIIamp = 4.0 * (1.0 - nu) / (M_PI * (2.0 - nu)) * s * sc * root;
+    double worst[3] = {0, 0, 0};
+    for (const auto& f : sifs) {
+        const double w = std::atan2(f.position.dot(e2), f.position.dot(e1));
+        worst[0] = std::max(worst[0], std::abs(f.KI - KI) / KI);
+        worst[1] = std::max(worst[1], std::abs(f.KII - KIIamp * std::cos(w)) / KIIamp);
+        worst[2] = std::max(worst[2], std::abs(f.KIII - KIIIamp * std::sin(w)) / KIIIamp);
+    }
+    std::printf("inclined penny: worst K_I %.2f %%, K_II %.2f %%, K_III %.2f %% of amplitude\n", 100 * worst[0],
+                100 * worst[1], 100 * worst[2]);
+    EXPECT_LT(worst[0], 0.05);
+    EXPECT_LT(worst[1], 0.05);
+    EXPECT_LT(worst[2], 0.05);
+}
+
+TEST(CrackSystem, CrackFacesAreTractionFreeUnderRefinement) {
+    // The Galerkin system makes the crack faces traction-free in the weak sense; pointwise, the
+    // traction sigma n_c just off the faces (Eq. 7 with the crack term) falls to zero at first
+    // order in h: measured 8 % of the applied stress at 4 rings and 4 % at 8 rings (against
+    // 97 % on that plane without the crack).
+    const double a = 0.05, s = 1e6;
+    const Eigen::Vector3d normal = Eigen::Vector3d(0.3, 0.0, 1.0).normalized();
+    const ElasticSolver solver(SurfaceMesh(makeBox({4 * a, 4 * a, 4 * a}, 6, 6, 6)), kMaterial);
+    Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
+    sigma(2, 2) = s;
+    const Eigen::VectorXd q = uniformStressTractions(solver.mesh(), sigma);
+    std::vector<double> worst;
+    for (int rings : {4, 8}) {
+        CrackMesh cracks;
+    CrackSystem system(solver, cracks);
+        addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), normal, a, rings);
+        system.update();
+        const CrackSystem::Solution sol = system.solve(q);
+        const Eigen::VectorXd cod = system.nodalOpenings(sol);
+        StressEvaluator evaluator(solver.mesh(), kMaterial.youngsModulus(), kMaterial.poissonRatio(), sol.displacements, q);
+        evaluator.addCracks(system.cracks(), cod);
+        const CrackMesh& cm = system.cracks();
+        double w = 0.0;
+        for (int t = 0; t < cm.triangleCount(); ++t) {
+            const auto& tri = cm.triangle(t);
+            const Eigen::Vector3d c = (cm.node(tri[0]) + cm.node(tri[1]) + cm.node(tri[2])) / 3.0;
+            if (c.norm() > 0.6 * a) continue;  // away from the front's singular field
+            for (int side : {1, -1}) {
+                const Eigen::Vector3d x = c + side * 0.1 * std::sqrt(cm.area(t)) * cm.normal(t);
+                w = std::max(w, (evaluator.interiorStress(x) * cm.normal(t)).norm() / s);
+            }
+        }
+        std::printf("crack-face traction at %d rings: %.3f of the applied stress\n", rings, w);
+        worst.push_back(w);
+    }
+    EXPECT_LT(worst[0], 0.1);
+    EXPECT_LT(worst[1], 0.05);
+    EXPECT_GT(worst[0] / worst[1], 1.6);
+}
