@@ -69,6 +69,28 @@ void addTransposed(Dst& dst, const Src& src) {
         }
 }
 
+// A := A + A^T in cache-sized tiles, each tile pair read and written once.
+void symmetriseInPlace(Eigen::MatrixXd& A) {
+    constexpr int kTile = 64;
+    const int n = static_cast<int>(A.rows());
+    std::vector<std::pair<int, int>> tiles;
+    for (int j0 = 0; j0 < n; j0 += kTile)
+        for (int i0 = j0; i0 < n; i0 += kTile) tiles.emplace_back(i0, j0);
+#pragma omp parallel for schedule(dynamic, 4)
+    for (int t = 0; t < static_cast<int>(tiles.size()); ++t) {
+        const int i0 = tiles[t].first, j0 = tiles[t].second;
+        const int h = std::min(kTile, n - i0), w = std::min(kTile, n - j0);
+        if (i0 == j0) {
+            const Eigen::MatrixXd sum = A.block(i0, j0, h, w) + A.block(i0, j0, h, w).transpose();
+            A.block(i0, j0, h, w) = sum;
+        } else {
+            const Eigen::MatrixXd sum = A.block(i0, j0, h, w) + A.block(j0, i0, w, h).transpose();
+            A.block(i0, j0, h, w) = sum;
+            A.block(j0, i0, w, h) = sum.transpose();
+        }
+    }
+}
+
 }  // namespace
 
 Panel panelOf(const SurfaceMesh& mesh, int t) {
@@ -104,12 +126,15 @@ BoundaryOperators assembleBoundaryOperators(const SurfaceMesh& mesh, const Elast
     // "owner"). The owner writes only rows of its own nodes (of `upper` and F) and rows of its
     // own traction triangle (of `reverse`); triangles of one colour share no node, so owners of
     // one colour never write the same entry, and every entry is summed in a fixed order.
-    //   K = upper + upper^T        (pair blocks for sigma < tau, half of the diagonal pairs)
+    //   K = U + U^T                (pair blocks for sigma < tau, half of the diagonal pairs)
     //   F = forward + reverse^T    (test hats on sigma / on tau)
     // Row-major scratch: an owner's rows are contiguous, which keeps its writes in cache.
     using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     BoundaryOperators ops;
-    RowMajorMatrix upper = RowMajorMatrix::Zero(3 * n, 3 * n);
+    // The owners' stiffness blocks U go into K's own storage as U^T (column p of K holds row p
+    // of U, contiguous per owner); K = U + U^T is then formed in place.
+    ops.stiffness.setZero(3 * n, 3 * n);
+    Eigen::MatrixXd& upperTransposed = ops.stiffness;
     ops.tractionToLoad.setZero(3 * n, 3 * m);
     RowMajorMatrix reverse = RowMajorMatrix::Zero(3 * m, 3 * n);
 
@@ -129,35 +154,59 @@ BoundaryOperators assembleBoundaryOperators(const SurfaceMesh& mesh, const Elast
                 const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
                 const auto& partnerNodes = mesh.triangle(tau);
                 const double stiffnessScale = tau == sigma ? 0.5 : 1.0;
-                double P[3][9];  // L [d_b]
-                for (int b = 0; b < 3; ++b) symTimesCross(coeff.L, cache.curls[tau][b].data(), P[b]);
+                const auto& c = cache.curls[sigma];
+                const auto& d = cache.curls[tau];
+                // Every block is linear in each curl and the three curls of a triangle sum to
+                // zero, so the blocks of corner 2 follow from those of corners 0 and 1.
+                double P[2][9];  // L [d_b]
+                for (int b = 0; b < 2; ++b) symTimesCross(coeff.L, d[b].data(), P[b]);
+                double K[3][3][9];  // K[a][b][3 i + j]
+                for (int a = 0; a < 2; ++a)
+                    for (int b = 0; b < 2; ++b)
+                        addStiffnessBlock(c[a].data(), d[b].data(), P[b], mu * coeff.a, stiffnessScale,
+                                          [&](int i, int j, double v) { K[a][b][3 * i + j] = v; });
+                for (int e = 0; e < 9; ++e) {
+                    K[0][2][e] = -K[0][0][e] - K[0][1][e];
+                    K[1][2][e] = -K[1][0][e] - K[1][1][e];
+                    K[2][0][e] = -K[0][0][e] - K[1][0][e];
+                    K[2][1][e] = -K[0][1][e] - K[1][1][e];
+                    K[2][2][e] = -K[2][0][e] - K[2][1][e];
+                }
+                double forward[3][9], backward[3][9];  // curl-linear parts of the F blocks
+                for (int a = 0; a < 2; ++a) {
+                    addLoadBlock(c[a].data(), coeff, mu, 0.0, [&](int i, int j, double v) { forward[a][3 * i + j] = v; });
+                    addLoadBlock(d[a].data(), coeff, mu, 0.0, [&](int i, int j, double v) { backward[a][3 * i + j] = v; });
+                }
+                for (int e = 0; e < 9; ++e) {
+                    forward[2][e] = -forward[0][e] - forward[1][e];
+                    backward[2][e] = -backward[0][e] - backward[1][e];
+                }
                 for (int ia = 0; ia < 3; ++ia) {
-                    const double* c = cache.curls[sigma][ia].data();
                     const int row = 3 * ownerNodes[ia];
                     for (int ib = 0; ib < 3; ++ib) {
                         const int col = 3 * partnerNodes[ib];
-                        addStiffnessBlock(c, cache.curls[tau][ib].data(), P[ib], mu * coeff.a, stiffnessScale,
-                                          [&](int i, int j, double v) { upper(row + i, col + j) += v; });
+                        for (int i = 0; i < 3; ++i)
+                            for (int j = 0; j < 3; ++j) upperTransposed(col + j, row + i) += K[ia][ib][3 * i + j];
                     }
                     // Test hat phi_p on sigma, traction on tau (x on tau, density on sigma).
                     const double scalar = -pi.doubleLayerYX[ia] + (tau == sigma ? mesh.area(sigma) / 6.0 : 0.0);
-                    addLoadBlock(c, coeff, mu, scalar,
-                                 [&](int i, int j, double v) { ops.tractionToLoad(row + i, 3 * tau + j) += v; });
+                    for (int i = 0; i < 3; ++i)
+                        for (int j = 0; j < 3; ++j)
+                            ops.tractionToLoad(row + i, 3 * tau + j) += forward[ia][3 * i + j] + (i == j ? scalar : 0.0);
                 }
                 if (tau == sigma) continue;
                 for (int ib = 0; ib < 3; ++ib) {
                     // Test hat phi_q on tau, traction on sigma: stored transposed in the owner's rows.
                     const int col = 3 * partnerNodes[ib];
-                    addLoadBlock(cache.curls[tau][ib].data(), coeff, mu, -pi.doubleLayerXY[ib],
-                                 [&](int i, int j, double v) { reverse(3 * sigma + j, col + i) += v; });
+                    const double scalar = -pi.doubleLayerXY[ib];
+                    for (int i = 0; i < 3; ++i)
+                        for (int j = 0; j < 3; ++j)
+                            reverse(3 * sigma + j, col + i) += backward[ib][3 * i + j] + (i == j ? scalar : 0.0);
                 }
             }
         }
     }
-    // Row-major storage of `upper` read as column-major is upper^T; adding its transpose gives K.
-    const Eigen::Map<const Eigen::MatrixXd> upperTransposed(upper.data(), 3 * n, 3 * n);
-    ops.stiffness = upperTransposed;
-    addTransposed(ops.stiffness, upperTransposed);
+    symmetriseInPlace(ops.stiffness);
     addTransposed(ops.tractionToLoad, reverse);
     return ops;
 }

@@ -9,11 +9,13 @@
 
 namespace btfracture {
 
-TriangleMesh makeBox(const Eigen::Vector3d& h, double cellsPerUnit) {
+TriangleMesh makeBox(const Eigen::Vector3d& h, double cellsPerUnit, const std::string& name) {
     auto cells = [cellsPerUnit](double halfExtent) {
         return std::max(1, static_cast<int>(std::lround(cellsPerUnit * 2.0 * halfExtent)));
     };
-    return makeBox(h, cells(h.x()), cells(h.y()), cells(h.z()));
+    TriangleMesh box = makeBox(h, cells(h.x()), cells(h.y()), cells(h.z()));
+    box.name = name;
+    return box;
 }
 
 TriangleMesh makeBox(const Eigen::Vector3d& h, int nx, int ny, int nz) {

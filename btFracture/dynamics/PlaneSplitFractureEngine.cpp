@@ -4,7 +4,7 @@
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/Timer.h>
-#include <btFracture/dynamics/ConvexHullMesh.h>
+#include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/dynamics/TractionBalance.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 

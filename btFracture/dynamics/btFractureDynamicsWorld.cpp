@@ -6,7 +6,7 @@
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/ContactCurvature.h>
-#include <btFracture/dynamics/ConvexHullMesh.h>
+#include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/HertzContact.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>

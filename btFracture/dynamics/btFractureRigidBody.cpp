@@ -5,7 +5,8 @@
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/ContactCurvature.h>
-#include <btFracture/dynamics/ConvexHullMesh.h>
+#include <btFracture/core/Primitives.h>
+#include <btFracture/geometry/ConvexHull.h>
 
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
@@ -98,7 +99,7 @@ btFractureRigidBody::btFractureRigidBody(const Material& material, TriangleMesh 
 
 btFractureRigidBody::btFractureRigidBody(const Material& material, const btBoxShape& box,
                                          const FractureBodySettings& settings, const btTransform& transform)
-    : btFractureRigidBody(material, boxMesh(toEigen(box.getHalfExtentsWithMargin()), "box"), settings,
+    : btFractureRigidBody(material, makeBox(toEigen(box.getHalfExtentsWithMargin()), 0.0, "box"), settings,
                           transform) {}
 
 btFractureRigidBody::btFractureRigidBody(const Material& material, const btConvexHullShape& hull,

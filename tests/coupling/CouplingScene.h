@@ -10,9 +10,12 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <gtest/gtest.h>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -132,6 +135,13 @@ public:
         for (int i = 0; i < count; ++i) world->stepSimulation(btScalar(kStep), 1, btScalar(kStep));
     }
 
+    // Poses of the fragments, in world array order.
+    std::vector<btTransform> fragmentPoses() const {
+        std::vector<btTransform> poses;
+        for (btFractureRigidBody* f : fragments()) poses.push_back(f->getWorldTransform());
+        return poses;
+    }
+
     // Fragments in the world (world-owned btFractureRigidBody), in world array order.
     std::vector<btFractureRigidBody*> fragments() const {
         std::vector<btFractureRigidBody*> out;
@@ -153,5 +163,15 @@ public:
     std::unique_ptr<btFractureRigidBody> slab;
     std::unique_ptr<btRigidBody> ball;
 };
+
+// Two runs' fragment poses agree bit for bit.
+inline void expectBitIdentical(const std::vector<btTransform>& first, const std::vector<btTransform>& second) {
+    ASSERT_GE(first.size(), 2u);
+    ASSERT_EQ(first.size(), second.size());
+    for (std::size_t i = 0; i < first.size(); ++i) {
+        EXPECT_EQ(std::memcmp(&first[i].getBasis(), &second[i].getBasis(), sizeof(btMatrix3x3)), 0) << i;
+        EXPECT_EQ(std::memcmp(&first[i].getOrigin(), &second[i].getOrigin(), sizeof(btVector3)), 0) << i;
+    }
+}
 
 }  // namespace btfracture::test

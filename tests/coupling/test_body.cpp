@@ -1,7 +1,8 @@
 #include "TestMeshes.h"
 
 #include <btFracture/core/Error.h>
-#include <btFracture/dynamics/ConvexHullMesh.h>
+#include <btFracture/core/Primitives.h>
+#include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 
 #include <btBulletDynamicsCommon.h>
@@ -68,7 +69,7 @@ TEST(FractureBody, OffsetMeshIsRecentredAndPlaced) {
 
 TEST(FractureBody, ConvexHullShapeIsMeshed) {
     btConvexHullShape hull;
-    for (const auto& v : boxMesh(Eigen::Vector3d(0.1, 0.2, 0.3), "b").vertices)
+    for (const auto& v : makeBox(Eigen::Vector3d(0.1, 0.2, 0.3), 0.0, "b").vertices)
         hull.addPoint(btVector3(btScalar(v.x() + 0.5), btScalar(v.y()), btScalar(v.z())));
     btFractureRigidBody body(Material::concrete(), hull);
     EXPECT_NEAR(body.volume(), 0.2 * 0.4 * 0.6, 1e-8);
@@ -116,7 +117,7 @@ TEST(FractureBody, CurvatureProxy) {
 }
 
 TEST(FractureBody, BadInputThrowsNamingTheBody) {
-    TriangleMesh open = boxMesh(Eigen::Vector3d(1, 1, 1), "open box");
+    TriangleMesh open = makeBox(Eigen::Vector3d(1, 1, 1), 0.0, "open box");
     open.triangles.pop_back();
     try {
         btFractureRigidBody body(Material::glass(), open);
@@ -127,7 +128,7 @@ TEST(FractureBody, BadInputThrowsNamingTheBody) {
     FractureBodySettings settings;
     settings.impulseThreshold = -1.0;
     try {
-        btFractureRigidBody body(Material::glass(), boxMesh(Eigen::Vector3d(1, 1, 1), "cube"), settings);
+        btFractureRigidBody body(Material::glass(), makeBox(Eigen::Vector3d(1, 1, 1), 0.0, "cube"), settings);
         FAIL();
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("impulseThreshold -1"), std::string::npos) << e.what();

@@ -1,7 +1,8 @@
 // Principal axes of a mass-property tensor and libccd penetration (helpers the coupling uses).
 #include <btFracture/core/Error.h>
 #include <btFracture/core/MassProperties.h>
-#include <btFracture/dynamics/ConvexHullMesh.h>
+#include <btFracture/core/Primitives.h>
+#include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/geometry/ConvexPenetration.h>
 
 #include <gtest/gtest.h>
@@ -11,7 +12,7 @@ using namespace btfracture;
 
 TEST(PrincipalAxes, RotatedOffsetBoxIsExact) {
     const Eigen::Vector3d h(0.2, 0.05, 0.3);
-    TriangleMesh box = boxMesh(h, "box");
+    TriangleMesh box = makeBox(h, 0.0, "box");
     const Eigen::AngleAxisd rotation(0.7, Eigen::Vector3d(1, 2, 3).normalized());
     const Eigen::Vector3d offset(5.0, -3.0, 2.0);
     for (auto& v : box.vertices) v = rotation * v + offset;
@@ -39,7 +40,7 @@ TEST(PrincipalAxes, RotatedOffsetBoxIsExact) {
 
 TEST(ConvexPenetration, OverlappingBoxesHandComputed) {
     // Unit cubes centred at x = 0 and x = 0.8: they overlap by 0.2 along x.
-    ConvexPolytope a{boxMesh(Eigen::Vector3d(0.5, 0.5, 0.5), "a").vertices, 0.0};
+    ConvexPolytope a{makeBox(Eigen::Vector3d(0.5, 0.5, 0.5), 0.0, "a").vertices, 0.0};
     ConvexPolytope b = a;
     for (auto& p : b.points) p.x() += 0.8;
     Penetration pen = convexPenetration(a, b);

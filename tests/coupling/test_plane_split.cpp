@@ -2,7 +2,8 @@
 
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
-#include <btFracture/dynamics/ConvexHullMesh.h>
+#include <btFracture/core/Primitives.h>
+#include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/dynamics/PlaneSplitFractureEngine.h>
 
 #include <gtest/gtest.h>
@@ -12,7 +13,7 @@ using namespace btfracture;
 
 TEST(PlaneSplit, BoxHalvesAreClosedAndExact) {
     const Eigen::Vector3d h(0.2, 0.025, 0.2);
-    const TriangleMesh box = boxMesh(h, "slab");
+    const TriangleMesh box = makeBox(h, 0.0, "slab");
     const MassProperties whole = computeMassProperties(box);
     // An oblique plane through an off-centre point.
     const Eigen::Vector3d p(0.05, 0.01, -0.03), n = Eigen::Vector3d(0.3, 0.1, 1.0).normalized();
@@ -40,7 +41,7 @@ TEST(PlaneSplit, BoxHalvesAreClosedAndExact) {
 }
 
 TEST(PlaneSplit, AxisAlignedCutThroughVerticesAndMisses) {
-    const TriangleMesh box = boxMesh(Eigen::Vector3d(1, 1, 1), "cube");
+    const TriangleMesh box = makeBox(Eigen::Vector3d(1, 1, 1), 0.0, "cube");
     // Through the middle: two exact halves of volume 4 (the cut crosses the face diagonals).
     auto [a, b] = splitConvexMesh(box, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX());
     EXPECT_NEAR(computeMassProperties(a).volume, 4.0, 1e-12);

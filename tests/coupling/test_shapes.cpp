@@ -2,7 +2,8 @@
 
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/dynamics/CollisionShapeBuilder.h>
-#include <btFracture/dynamics/ConvexHullMesh.h>
+#include <btFracture/core/Primitives.h>
+#include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
@@ -14,7 +15,7 @@
 using namespace btfracture;
 
 TEST(CollisionShapes, ConvexHullIsShrunkByItsMargin) {
-    const TriangleMesh box = boxMesh(Eigen::Vector3d(0.2, 0.1, 0.3), "box");
+    const TriangleMesh box = makeBox(Eigen::Vector3d(0.2, 0.1, 0.3), 0.0, "box");
     CollisionShapeOptions options;
     options.margin = 0.01;
     const auto storage = buildCollisionShape(box, CollisionShapeKind::ConvexHull, options);
@@ -87,7 +88,7 @@ TEST(CollisionShapes, NonConvexBodiesRestStablyOnTheGround) {
 }
 
 TEST(FragmentSeparation, OverlappingBoxesArePushedApartAboutTheirCentreOfMass) {
-    const auto cube = boxMesh(Eigen::Vector3d(0.5, 0.5, 0.5), "cube").vertices;
+    const auto cube = makeBox(Eigen::Vector3d(0.5, 0.5, 0.5), 0.0, "cube").vertices;
     SeparationBody a{{ConvexPolytope{cube, 0.0}}, 1.0, 1.0};
     SeparationBody b = a;
     for (auto& p : b.pieces[0].points) p.x() += 0.95;  // 5 cm overlap
