@@ -2,7 +2,7 @@
 # Runs the libFuzzer targets built in BUILD (make fuzz-short / make fuzz-long).
 #   run-fuzz.sh BUILD short   each target for FUZZ_SECONDS (default 10) seconds
 #   run-fuzz.sh BUILD long    each target for FUZZ_RUNS (default 1000000) executions or
-#                             FUZZ_MAX_SECONDS (default 600) seconds, whichever comes first
+#                             FUZZ_MAX_SECONDS (default 1200) seconds, whichever comes first
 # The working corpus grows in BUILD/fuzz/work/<target> (seeded from fuzz/corpus/<target>); a
 # crash leaves its input in BUILD/fuzz/artifacts/<target>/ and fails the run. Turn each one into
 # a regression: copy it to fuzz/regressions/<target>/ (replayed by CTest) and fix the bug.
@@ -12,7 +12,7 @@ build=${1:?usage: run-fuzz.sh BUILD short|long}
 mode=${2:?usage: run-fuzz.sh BUILD short|long}
 case "$mode" in
   short) limits=(-max_total_time="${FUZZ_SECONDS:-10}") ;;
-  long) limits=(-runs="${FUZZ_RUNS:-1000000}" -max_total_time="${FUZZ_MAX_SECONDS:-600}") ;;
+  long) limits=(-runs="${FUZZ_RUNS:-1000000}" -max_total_time="${FUZZ_MAX_SECONDS:-1200}") ;;
   *) echo "run-fuzz.sh: mode must be short or long" >&2; exit 2 ;;
 esac
 declare -A dict=([obj_loader]=obj [ply_loader]=ply [scene_parser]=scene [fracturerb_csv]=fracturerb_csv)

@@ -16,6 +16,7 @@ void writePng(const std::string& path, const Image& image) {
     info.width = static_cast<png_uint_32>(image.width());
     info.height = static_cast<png_uint_32>(image.height());
     info.format = PNG_FORMAT_RGB;
+    info.flags = PNG_IMAGE_FLAG_FAST;  // speed over size: preview frames are written every few steps
     static_assert(sizeof(Rgb) == 3, "Rgb must be three packed bytes");
     if (!png_image_write_to_file(&info, path.c_str(), 0, image.pixels().data(), 0, nullptr)) {
         const std::string reason = info.message;

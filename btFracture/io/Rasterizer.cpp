@@ -76,8 +76,18 @@ Rasterizer::Rasterizer(const RenderSettings& settings, const Camera& camera, Rgb
     width_ = settings.width * settings.supersampling;
     height_ = settings.height * settings.supersampling;
     light_ = (-0.45 * camera.right + 0.65 * camera.up - 0.6 * camera.forward).normalized();
-    colour_.assign(static_cast<size_t>(width_) * height_, unitColour(background));
-    depth_.assign(colour_.size(), -std::numeric_limits<double>::infinity());
+    clear(background);
+}
+
+void Rasterizer::clear(Rgb background) {
+    const size_t samples = static_cast<size_t>(width_) * height_;
+    colour_.resize(3 * samples);
+    for (size_t k = 0; k < samples; ++k) {
+        colour_[3 * k] = background.r / 255.0f;
+        colour_[3 * k + 1] = background.g / 255.0f;
+        colour_[3 * k + 2] = background.b / 255.0f;
+    }
+    depth_.assign(samples, -std::numeric_limits<double>::infinity());
 }
 
 Rasterizer::ScreenVertex Rasterizer::project(const Eigen::Vector3d& p, const Eigen::Vector3d& colour) const {
@@ -196,32 +206,59 @@ void Rasterizer::fillTriangle(const ScreenVertex& a, const ScreenVertex& b, cons
         return (v.x - u.x) * (py - u.y) - (v.y - u.y) * (px - u.x);
     };
     const double stepA = -(c.y - b.y), stepB = -(a.y - c.y), stepC = -(b.y - a.y);
+    const double steps[3] = {stepA * inverseArea, stepB * inverseArea, stepC * inverseArea};
     for (int j = y0; j <= y1; ++j) {
-        const double py = j + 0.5, px = x0 + 0.5;
+        const double py = j + 0.5;
+        // The span of this row inside all three edges (barycentric l(x) = l0 + step (x - x0) >= 0),
+        // widened by a pixel each side; the exact test below decides.
+        const double atX0[3] = {edge(b, c, x0 + 0.5, py) * inverseArea,
+                                edge(c, a, x0 + 0.5, py) * inverseArea,
+                                edge(a, b, x0 + 0.5, py) * inverseArea};
+        double lo = x0, hi = x1;
+        for (int e = 0; e < 3; ++e) {
+            if (steps[e] > 0.0)
+                lo = std::max(lo, x0 - atX0[e] / steps[e]);
+            else if (steps[e] < 0.0)
+                hi = std::min(hi, x0 - atX0[e] / steps[e]);
+            else if (atX0[e] < 0.0)
+                hi = lo - 1.0;  // parallel to this edge and outside it
+        }
+        if (!(hi >= lo - 1.0)) continue;
+        const int first = std::max(x0, static_cast<int>(std::floor(lo)) - 1);
+        const int last = std::min(x1, static_cast<int>(std::ceil(hi)) + 1);
+        const double px = first + 0.5;
         double wa = edge(b, c, px, py), wb = edge(c, a, px, py), wc = edge(a, b, px, py);
-        for (int i = x0; i <= x1; ++i, wa += stepA, wb += stepB, wc += stepC) {
+        for (int i = first; i <= last; ++i, wa += stepA, wb += stepB, wc += stepC) {
             const double la = wa * inverseArea, lb = wb * inverseArea, lc = wc * inverseArea;
             if (la < 0.0 || lb < 0.0 || lc < 0.0) continue;
             const double depth = la * a.depth + lb * b.depth + lc * c.depth;
             const size_t index = static_cast<size_t>(j) * width_ + i;
             if (depth <= depth_[index]) continue;
             depth_[index] = depth;
-            colour_[index] = la * a.colour + lb * b.colour + lc * c.colour;
+            const Eigen::Vector3d colour = la * a.colour + lb * b.colour + lc * c.colour;
+            for (int k = 0; k < 3; ++k) colour_[3 * index + k] = static_cast<float>(colour[k]);
         }
     }
 }
 
 Image Rasterizer::image() const {
     const int s = settings_.supersampling;
+    const float scale = 255.0f / static_cast<float>(s * s);
     Image out(settings_.width, settings_.height);
+    Rgb* pixel = out.data();
     for (int y = 0; y < settings_.height; ++y)
-        for (int x = 0; x < settings_.width; ++x) {
-            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-            for (int v = 0; v < s; ++v)
-                for (int u = 0; u < s; ++u)
-                    sum += colour_[static_cast<size_t>(y * s + v) * width_ + (x * s + u)];
-            sum /= s * s;
-            out.at(x, y) = rgbFromUnit(sum.x(), sum.y(), sum.z());
+        for (int x = 0; x < settings_.width; ++x, ++pixel) {
+            float sum[3] = {0.0f, 0.0f, 0.0f};
+            for (int v = 0; v < s; ++v) {
+                const float* row =
+                    &colour_[3 * (static_cast<size_t>(y * s + v) * width_ + static_cast<size_t>(x * s))];
+                for (int u = 0; u < 3 * s; u += 3)
+                    for (int k = 0; k < 3; ++k) sum[k] += row[u + k];
+            }
+            auto byte = [scale](float total) {
+                return static_cast<std::uint8_t>(std::clamp(total * scale + 0.5f, 0.0f, 255.0f));
+            };
+            *pixel = Rgb{byte(sum[0]), byte(sum[1]), byte(sum[2])};
         }
     return out;
 }

@@ -39,6 +39,9 @@ public:
     // Clears to `background`. Renders internally at settings.supersampling times the size.
     Rasterizer(const RenderSettings& settings, const Camera& camera, Rgb background);
 
+    // Starts a new picture on the same buffers (no reallocation between frames).
+    void clear(Rgb background);
+
     // Draws `mesh` (world coordinates, counter-clockwise seen from outside) in `colour`.
     void draw(const TriangleMesh& mesh, Rgb colour, Faces faces = Faces::Front);
 
@@ -56,9 +59,9 @@ private:
 
     RenderSettings settings_;
     Camera camera_;
-    int width_, height_;                   // internal buffer size
-    Eigen::Vector3d light_;                // unit vector towards the light, world frame
-    std::vector<Eigen::Vector3d> colour_;  // internal buffer, linear [0, 1]
+    int width_, height_;         // internal buffer size
+    Eigen::Vector3d light_;      // unit vector towards the light, world frame
+    std::vector<float> colour_;  // internal buffer: r, g, b per sample in [0, 1]
     std::vector<double> depth_;
 };
 

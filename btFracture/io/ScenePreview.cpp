@@ -82,8 +82,12 @@ void ScenePreview::label(Image& image, const std::string& text) const {
     drawText(image, 4 * scale, 4 * scale, text, kLabel, scale);
 }
 
-Image ScenePreview::render(const SceneWorld& world) const {
-    Rasterizer rasterizer(settings_, camera_, background());
+Image ScenePreview::render(const SceneWorld& world) {
+    if (rasterizer_)
+        rasterizer_->clear(background());
+    else
+        rasterizer_.emplace(settings_, camera_, background());
+    Rasterizer& rasterizer = *rasterizer_;
     for (size_t i = 0; i < world.bodies().size(); ++i) {
         const bool plane = world.scene().bodies[i].shape.type == SceneShapeType::Plane;
         rasterizer.draw(world.worldSurface(i), colourOf(world.bodies()[i].name),

@@ -6,6 +6,7 @@
 #include <btFracture/io/RenderSettings.h>
 
 #include <map>
+#include <optional>
 #include <string>
 
 namespace btfracture {
@@ -20,8 +21,8 @@ public:
     // position in the scene: static bodies grey, the others from an 8-colour palette.
     ScenePreview(const SceneWorld& world, const RenderSettings& settings);
 
-    // The world as it is now.
-    Image render(const SceneWorld& world) const;
+    // The world as it is now (reuses one rasterizer's buffers from frame to frame).
+    Image render(const SceneWorld& world);
     // Writes `text` (e.g. "t = 0.400 s") into the top-left corner, scaled with the image height.
     void label(Image& image, const std::string& text) const;
 
@@ -37,6 +38,7 @@ private:
     RenderSettings settings_;
     Camera camera_;
     std::map<std::string, Rgb> colours_;  // original bodies by name
+    std::optional<Rasterizer> rasterizer_;
 };
 
 }  // namespace btfracture

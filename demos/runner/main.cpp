@@ -470,11 +470,12 @@ int run(const Options& options) {
         std::string written;
         auto item = [&](const std::string& text) { written += (written.empty() ? "" : ", ") + text; };
         if (objFrames > 0)
-            item(std::to_string(objFrames) + " OBJ frames (every " + std::to_string(objEvery) +
-                 " steps) frame_00000.obj .. " + frameName(objFrames - 1, "obj"));
+            item(std::to_string(objFrames) + (objFrames == 1 ? " OBJ frame (every " : " OBJ frames (every ") +
+                 std::to_string(objEvery) + " steps) frame_00000.obj .. " + frameName(objFrames - 1, "obj"));
         if (pngFrames > 0)
-            item(std::to_string(pngFrames) + " PNG frames (every " + std::to_string(pngEvery) +
-                 " steps) frame_00000.png .. " + frameName(pngFrames - 1, "png") + ", contact_sheet.png");
+            item(std::to_string(pngFrames) + (pngFrames == 1 ? " PNG frame (every " : " PNG frames (every ") +
+                 std::to_string(pngEvery) + " steps) frame_00000.png .. " + frameName(pngFrames - 1, "png") +
+                 ", contact_sheet.png");
         if (formats.csv)
             item(std::string("statistics.csv") + (histogram ? ", fragments.csv, fragment_volumes.csv" : ""));
         if (histogram && formats.png) item("fragment_volumes.png");
