@@ -1,7 +1,9 @@
 #include <btFracture/dynamics/BemFractureEngine.h>
 
 #include <btFracture/bem/ElasticSolver.h>
+#include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/SelfIntersection.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/TractionBalance.h>
@@ -14,7 +16,9 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <mutex>
 
 namespace btfracture {
 namespace {
@@ -26,7 +30,10 @@ class BemFractureState : public FractureState {
 public:
     Eigen::Isometry3d bodyToState = Eigen::Isometry3d::Identity();
     std::shared_ptr<LevelSetBody> levelSet;
-    TriangleMesh bemSource;   // closed surface the BEM mesh is remeshed from (state frame)
+    // Closed surface the BEM mesh is remeshed from (state frame): the body's mesh, for fragments
+    // their decimated collision mesh (the fine level-set surface has sub-voxel wedges along
+    // crack rims that made the remesher stall and leave intersecting triangles).
+    TriangleMesh bemSource;
     CrackMesh carriedCracks;  // incomplete cracks inherited from a parent (state frame, §5.3)
     std::unique_ptr<ElasticSolver> solver;            // BEM frame = state frame - solver->mesh().offset()
     std::unique_ptr<TractionBalancer> balancer;       // on the BEM mesh, BEM frame
@@ -47,7 +54,18 @@ Eigen::Isometry3d fragmentFrame(const Eigen::Vector3d& centreOfMass, const Eigen
 
 void buildBem(BemFractureState& s, const btFractureRigidBody& body, const FractureSettings& base, FractureStatistics& stats) {
     const FractureBodySettings& b = body.settings();
-    TriangleMesh bem = remeshForBem(s.bemSource, b.bemTriangleTarget);
+    // One refinement round at most: on fragment surfaces whose parts nearly touch, more rounds
+    // cost minutes and still leave intersections (the solver then rejects the mesh).
+    // A self-intersecting source cannot give a valid BEM mesh; say so at once instead of
+    // letting the remesher spend seconds to fail. (Known: the decimated collision meshes of
+    // level-set fragments often self-intersect, so such fragments do not refracture.)
+    const std::size_t crossings = findSelfIntersections(s.bemSource).size();
+    if (crossings > 0)
+        throw Error(body.name() + ": its surface mesh has " + std::to_string(crossings) +
+                    " self-intersecting triangle pairs; no BEM mesh can be built from it");
+    RemeshOptions remesh;
+    remesh.maxRefinements = 1;
+    TriangleMesh bem = remeshForBem(s.bemSource, b.bemTriangleTarget, remesh);
     bem.name = body.name() + " (BEM)";
     s.solver = std::make_unique<ElasticSolver>(SurfaceMesh(std::move(bem)), body.material());
     ++stats.bemBuilds;
@@ -57,6 +75,7 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
     FractureSettings settings = base;
     settings.method = b.method;
     settings.hybridElementThreshold = std::max(1, b.hybridElementThreshold);
+    if (b.materialNoise.amplitude > 0.0) settings.noise = b.materialNoise;
     s.fracture = std::make_unique<FractureSolver>(*s.solver, MaterialField(body.material(), settings.noise), settings);
     if (s.carriedCracks.triangleCount() > 0) {
         const Eigen::Vector3d shift = -mesh.offset();
@@ -137,7 +156,23 @@ BemFractureEngine::BemFractureEngine(const BemFractureEngineSettings& settings) 
 double BemFractureEngine::meanCurvature(const btFractureRigidBody& body, const Eigen::Vector3d& bodyPoint) const {
     const auto* s = dynamic_cast<const BemFractureState*>(body.fractureState());
     if (!s || !s->levelSet) return FractureEngine::meanCurvature(body, bodyPoint);
-    return s->levelSet->meanCurvature(toState(*s, bodyPoint));
+    // A contact on a convex hull or decomposition can lie farther from the true surface than
+    // the level set's narrow band (a concave region under a hull face): the mesh proxy answers.
+    const Eigen::Vector3d p = toState(*s, bodyPoint);
+    if (std::abs(s->levelSet->signedDistance(p)) >= 2.5 * s->levelSet->voxelSize()) {
+        static std::once_flag logged;
+        std::call_once(logged, [&] {
+            logf(LogLevel::Info, body.name(), ": contact point more than 2.5 voxels from the level-set surface ",
+                 "(collision shape wider than the body); curvature from the mesh there. Reported once per process");
+        });
+        return FractureEngine::meanCurvature(body, bodyPoint);
+    }
+    try {
+        return s->levelSet->meanCurvature(p);
+    } catch (const Error& e) {  // the projection onto the surface failed (a thin or cracked region)
+        logf(LogLevel::Info, body.name(), ": level-set curvature failed (", e.what(), "); curvature from the mesh");
+        return FractureEngine::meanCurvature(body, bodyPoint);
+    }
 }
 
 FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
@@ -193,6 +228,8 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body, const std
         named.name = body.name() + " crack " + std::to_string(sheet);
         s.levelSet->cutAlongSurface(named, sheet);
     }
+    outcome.crackTriangles = s.fracture->cracks().triangleCount();
+    if (cutObserver_) cutObserver_(body, *s.levelSet);
     FragmentSettings fragmentSettings = settings_.fragments;
     fragmentSettings.collisionTriangles = b.collisionTriangleTarget;
     std::vector<Fragment> fragments = s.levelSet->fragments(fragmentSettings);
@@ -227,12 +264,12 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body, const std
             // The state moves on with this fragment: its BEM, cracks and its own level set.
             s.bodyToState = parentToState * childToParentBody;
             s.levelSet = f.levelSet;
-            s.bemSource = f.surfaceMesh;
+            s.bemSource = f.collisionMesh;
         } else if (spec.cls == FragmentSpec::Class::Breakable) {
             auto carried = std::make_unique<BemFractureState>();
             carried->bodyToState = parentToState * childToParentBody;
             carried->levelSet = f.levelSet;
-            carried->bemSource = f.surfaceMesh;
+            carried->bemSource = f.collisionMesh;
             if (!f.incompleteCracks.empty())
                 carried->carriedCracks = s.fracture->cracks().extractSheets(f.incompleteCracks, offset);
             spec.carriedState = std::move(carried);

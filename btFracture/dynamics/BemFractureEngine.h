@@ -12,7 +12,11 @@
 #include <btFracture/dynamics/FractureEngine.h>
 #include <btFracture/geometry/Fragment.h>
 
+#include <functional>
+
 namespace btfracture {
+
+class LevelSetBody;
 
 struct BemFractureEngineSettings {
     // Crack initiation and propagation; method and hybrid threshold come from each body's
@@ -33,8 +37,15 @@ public:
 
     const BemFractureEngineSettings& settings() const { return settings_; }
 
+    // Called after new cracks were cut into a body's level set (parent body frame = the level
+    // set's frame for an original body), before it is split into fragments: lets an application
+    // save the fractured level set (LevelSetBody::writeVdb). Runs on the stepping thread.
+    using CutObserver = std::function<void(const btFractureRigidBody& body, const LevelSetBody& levelSet)>;
+    void setCutObserver(CutObserver observer) { cutObserver_ = std::move(observer); }
+
 private:
     BemFractureEngineSettings settings_;
+    CutObserver cutObserver_;
 };
 
 }  // namespace btfracture

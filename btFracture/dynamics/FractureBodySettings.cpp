@@ -24,6 +24,10 @@ void validate(const FractureBodySettings& s, const std::string& body) {
         problem << "maxRefractureDepth " << s.maxRefractureDepth << " (need >= 0)";
     else if (s.refractureDepth < 0)
         problem << "refractureDepth " << s.refractureDepth << " (need >= 0)";
+    else if (!(s.materialNoise.amplitude >= 0.0 && s.materialNoise.amplitude < 1.0))
+        problem << "materialNoise.amplitude " << s.materialNoise.amplitude << " (need [0, 1))";
+    else if (!(s.materialNoise.wavelength > 0.0) || !std::isfinite(s.materialNoise.wavelength))
+        problem << "materialNoise.wavelength " << s.materialNoise.wavelength << " m (need finite, > 0)";
     if (problem.tellp() > 0) throw Error(body + ": fracture settings: " + problem.str());
 }
 

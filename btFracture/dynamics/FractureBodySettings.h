@@ -26,6 +26,9 @@ struct FractureBodySettings {
     // get a btConvexHullShape); see CollisionShapeBuilder.h for the trade-off.
     CollisionShapeKind concaveShapeKind = CollisionShapeKind::ConvexDecomposition;
     CollisionShapeOptions shapeOptions;
+    // Seeded spatial variation of this body's strength and toughness; amplitude 0 (the default)
+    // leaves the engine's own FractureSettings::noise in force.
+    MaterialNoise materialNoise;
 };
 
 // Throws btfracture::Error naming `body` and the offending field when a value is out of range.

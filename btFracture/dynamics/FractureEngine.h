@@ -69,6 +69,7 @@ struct EngineTimings {
 struct FractureOutcome {
     std::vector<FragmentSpec> fragments;  // empty: nothing broke, the step stands as it is
     EngineTimings timings;                // optional
+    int crackTriangles = 0;               // crack-sheet triangles of the body's BEM, if it has one
 };
 
 class FractureEngine {

@@ -14,6 +14,8 @@ struct FractureEventInfo {
     std::uint64_t step = 0;          // the world's internal step counter at the event
     int contacts = 0;                // contacts handed to the engine
     double impulseSum = 0.0;         // summed normal impulse on the parent [N s]
+    double contactDuration = 0.0;    // longest Hertz contact duration of those contacts [s]
+    int crackTriangles = 0;          // crack-sheet triangles in the parent's BEM after the event
     double engineSeconds = 0.0;      // wall time inside FractureEngine::fracture()
     EngineTimings engineTimings;     // the engine's own split of that time, if it reports one
     double swapSeconds = 0.0;        // wall time for restoring, swapping and separating (whole step)

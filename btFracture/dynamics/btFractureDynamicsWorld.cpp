@@ -411,11 +411,14 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             event.info.step = stats_.steps;
             event.info.contacts = static_cast<int>(contacts.size());
             event.info.impulseSum = body->impulseSum_;
+            for (const BodyContact& c : contacts)
+                event.info.contactDuration = std::max(event.info.contactDuration, c.duration);
             ++stats_.engineCalls;
             Timer timer;
             event.outcome = engine_->fracture(*body, contacts, stats_);
             event.info.engineSeconds = timer.seconds();
             event.info.engineTimings = event.outcome.timings;
+            event.info.crackTriangles = event.outcome.crackTriangles;
             for (std::size_t k = 0; k < event.outcome.fragments.size(); ++k)
                 validateSpec(event.outcome.fragments[k], body->name() + ": fragment " + std::to_string(k));
         } catch (const Error& error) {

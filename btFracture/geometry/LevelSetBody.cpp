@@ -9,6 +9,7 @@
 #include <btFracture/geometry/MeshDecimation.h>
 #include <btFracture/geometry/internal/LevelSetGrids.h>
 
+#include <openvdb/io/File.h>
 #include <openvdb/tools/Composite.h>
 #include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/VolumeToMesh.h>
@@ -606,6 +607,27 @@ TriangleMesh LevelSetBody::visualMesh() const {
 
 TriangleMesh LevelSetBody::collisionMesh(int targetTriangles) const {
     return collisionMeshFromGrid(*impl_->solid, targetTriangles, impl_->name + " (collision)", nullptr);
+}
+
+void LevelSetBody::writeVdb(const std::string& path) const {
+    const Impl& b = *impl_;
+    levelset::FloatGrid::Ptr object = b.object->deepCopy();
+    object->setName(b.name + ".object");
+    object->setGridClass(openvdb::GRID_LEVEL_SET);
+    openvdb::GridPtrVec grids{object};
+    if (b.crack) {
+        levelset::FloatGrid::Ptr crack = b.crack->deepCopy();
+        crack->setName(b.name + ".cracks");
+        crack->setGridClass(openvdb::GRID_LEVEL_SET);
+        grids.push_back(crack);
+    }
+    try {
+        openvdb::io::File file(path);
+        file.write(grids);
+        file.close();
+    } catch (const std::exception& e) {
+        throw Error("cannot write level set of " + b.name + " to '" + path + "': " + e.what());
+    }
 }
 
 void LevelSetBody::cutAlongSurface(const TriangleMesh& sheet, int crackId) {

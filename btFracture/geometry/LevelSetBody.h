@@ -22,6 +22,7 @@
 #include <Eigen/Core>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace btfracture {
@@ -87,6 +88,12 @@ public:
     // Closed manifold mesh of the solid (cracks closed) with at most targetTriangles triangles,
     // decimated from the level set's mesh (MeshDecimation.h).
     TriangleMesh collisionMesh(int targetTriangles) const;
+
+    // Writes the level set to an OpenVDB file at `path`: grids "<name>.object" (the cut object,
+    // what fragments are segmented from) and "<name>.cracks" (the union of crack slabs), both
+    // signed distances in metres, negative inside. Throws btfracture::Error naming the path when
+    // the file cannot be written.
+    void writeVdb(const std::string& path) const;
 
     // Writes a swept crack surface into the crack grid as a slab and removes the slab from the
     // object (CSG difference). `sheet` is any set of triangles in the body frame (it need not

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <sstream>
 #include <utility>
@@ -35,9 +36,9 @@ constexpr double kMinNormalCosine = 0.0;      // isotropic edits never turn a fa
 constexpr double kMaxDeviation = 0.1;
 constexpr int kMaxIntersectionRounds = 20;
 // Where intersections survive smoothing, the target length is halved within this many target
-// lengths of them (at most kMaxRefinements times) and kRefinementIterations iterations follow.
+// lengths of them (at most RemeshOptions::maxRefinements times) and kRefinementIterations
+// iterations follow.
 constexpr double kRefinementRadius = 2.0;
-constexpr int kMaxRefinements = 3;
 constexpr int kRefinementIterations = 5;
 
 double surfaceArea(const TriangleMesh& mesh) {
@@ -182,6 +183,9 @@ void requireValidArguments(const std::string& source, int targetTriangles, const
     if (targetTriangles < kMinTargetTriangles)
         throw Error(source + ": BEM remesh target of " + std::to_string(targetTriangles) +
                     " triangles is below the minimum of " + std::to_string(kMinTargetTriangles));
+    if (options.maxRefinements < 0)
+        throw Error(source + ": RemeshOptions.maxRefinements must be >= 0, got " +
+                    std::to_string(options.maxRefinements));
     if (options.iterations < 1)
         throw Error(source + ": RemeshOptions.iterations must be >= 1, got " +
                     std::to_string(options.iterations));
@@ -222,13 +226,18 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
     // Self-intersections: smooth them apart; where that fails, the surface there is too close to
     // itself for the edge length, so halve the target length around them and remesh again.
     IntersectionSmoothingResult untangle;
+    int pairsBefore = std::numeric_limits<int>::max();
     for (int refinement = 0;; ++refinement) {
         untangle = smoothSelfIntersections(mesh, surface, minAngle, edgeLength, kMaxIntersectionRounds);
         if (untangle.rounds > 0)
             logf(LogLevel::Info, source, ": ", untangle.moves, " vertex moves and ", untangle.edits,
                  " flips or collapses in ", untangle.rounds,
                  " rounds to separate self-intersecting triangles, ", untangle.remainingPairs, " pairs left");
-        if (untangle.remainingPairs == 0 || refinement == kMaxRefinements) break;
+        if (untangle.remainingPairs == 0 || refinement >= options.maxRefinements) break;
+        // Refining that did not reduce the pairs will not (the input itself may touch or
+        // intersect there); further rounds would only multiply triangles.
+        if (untangle.remainingPairs >= pairsBefore) break;
+        pairsBefore = untangle.remainingPairs;
         const std::vector<Eigen::Vector3d> centres = intersectingTriangleCentres(mesh);
         std::vector<double> lengths;
         for (const auto& c : centres) lengths.push_back(field.at(c));

@@ -23,6 +23,9 @@ struct RemeshOptions {
     // Finally move vertices along their normals so that the mesh straddles the input surface
     // instead of lying inside it where it is convex (SurfaceFit.h); keeps the volume.
     bool fitAcrossSurface = true;
+    // Rounds that halve the target edge length around triangles that smoothing could not
+    // separate, >= 0; each costs a few remeshing iterations over the whole mesh.
+    int maxRefinements = 3;
 };
 
 // Remeshes a closed, manifold, consistently oriented triangle mesh (core/MeshCheck.h) to about

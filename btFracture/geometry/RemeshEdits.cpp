@@ -25,8 +25,12 @@ Eigen::Vector3d edgeMidpointOnSurface(const HalfEdgeMesh& mesh, const ClosestPoi
 CollapsePlan planCollapse(const HalfEdgeMesh& mesh, const ClosestPointTree& surface, int h,
                           const CollapseLimits& limits, CollapseGoal goal) {
     CollapsePlan plan;
-    if (!mesh.collapseKeepsManifold(h)) return plan;
     const int a = mesh.origin(h), b = mesh.target(h);
+    // The merged vertex gets valence(a) + valence(b) - 4. Capping it keeps fans (and the cost of
+    // the manifold test, quadratic in valence) bounded: on level-set fragment surfaces unbounded
+    // merging grew fans of thousands of edges and stalled the remesher for minutes.
+    if (mesh.valence(a) + mesh.valence(b) - 4 > kMaxCollapsedValence) return plan;
+    if (!mesh.collapseKeepsManifold(h)) return plan;
     const Eigen::Vector3d normal = mesh.vertexNormal(a) + mesh.vertexNormal(b);
     const Eigen::Vector3d candidates[3] = {
         projectOntoSurface(surface, 0.5 * (mesh.position(a) + mesh.position(b)), normal), mesh.position(a),

@@ -18,6 +18,9 @@ Eigen::Vector3d projectOntoSurface(const ClosestPointTree& surface, const Eigen:
 // Midpoint of the edge of h projected onto the surface (facing like the two faces at h).
 Eigen::Vector3d edgeMidpointOnSurface(const HalfEdgeMesh& mesh, const ClosestPointTree& surface, int h);
 
+// Largest valence a collapse may give the merged vertex (regular meshes have 6).
+constexpr int kMaxCollapsedValence = 12;
+
 struct CollapseLimits {
     double maxEdgeLength;    // no edge at the merged vertex may be this long or longer
     double minNormalCosine;  // every surviving face keeps its normal within acos(this)

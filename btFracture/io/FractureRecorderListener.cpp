@@ -28,6 +28,8 @@ void FractureRecorderListener::onFractureEvent(btFractureRigidBody& parent,
     record.body = found->second;
     record.contacts = info.contacts;
     record.impulse = info.impulseSum;
+    record.contactDuration = info.contactDuration;
+    record.crackTriangles = info.crackTriangles;
     record.method = parent.settings().method;
     record.bemTriangles = parent.settings().bemTriangleTarget;
     record.fractureSeconds = info.engineSeconds;

@@ -25,8 +25,7 @@ public:
     // A breakable scene body and its output name (recorder.addOriginal with its volume).
     void addOriginal(const btFractureRigidBody& body, const std::string& name);
 
-    // Fields of FractureEventRecord the world's FractureEventInfo does not carry yet are left at
-    // 0: contactDuration and crackTriangles. method is the body's method setting.
+    // method is the body's method setting; bemTriangles its BEM target.
     void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
                          const FractureEventInfo& info) override;
 

@@ -280,7 +280,7 @@ private:
         }
     }
 
-    // effects.fracture.<name>: fills body.fracture (keeping the resolutions) and body.materialNoise.
+    // effects.fracture.<name>: fills body.fracture (keeping the resolutions).
     void bodyFracture(const Json& value, const std::string& path, SceneBody& body) const {
         FractureBodySettings& f = body.fracture;
         if (value.is_boolean()) {
@@ -312,15 +312,17 @@ private:
         if (value.contains("material_noise")) {
             const Json& noise = value["material_noise"];
             const std::string npath = child(path, "material_noise");
-            requireObject(noise, npath, "an object {\"amplitude\": a, \"seed\": s}");
-            allowOnly(noise, npath, {"amplitude", "seed"});
+            requireObject(noise, npath, "an object {\"amplitude\": a, \"wavelength\": l, \"seed\": s}");
+            allowOnly(noise, npath, {"amplitude", "wavelength", "seed"});
             if (!noise.contains("amplitude"))
                 fail(child(npath, "amplitude"), "missing; expected a number in [0, 1)");
-            SceneMaterialNoise& n = body.materialNoise;
+            MaterialNoise& n = f.materialNoise;
             n.amplitude = number(noise["amplitude"], child(npath, "amplitude"), "a number in [0, 1)");
             if (!(n.amplitude >= 0.0 && n.amplitude < 1.0))
                 fail(child(npath, "amplitude"),
                      "expected a number in [0, 1), got " + shown(noise["amplitude"]));
+            if (noise.contains("wavelength"))
+                n.wavelength = positive(noise["wavelength"], child(npath, "wavelength"), "m");
             if (noise.contains("seed")) n.seed = seed(noise["seed"], child(npath, "seed"));
         }
     }

@@ -49,13 +49,6 @@ struct SceneShape {
 // throws btfracture::Error naming `what` and the accepted words.
 FractureMethod parseFractureMethod(const std::string& word, const std::string& what);
 
-// Random spatial variation of strength and toughness: value(x) = value * (1 + amplitude * n(x))
-// with smooth noise n in [-1, 1]; seed picks the realisation (combined with SceneEffects::seed).
-struct SceneMaterialNoise {
-    double amplitude = 0.0;  // [-], in [0, 1); 0 = homogeneous
-    std::uint64_t seed = 0;
-};
-
 // A body's fracture settings as the scene gives them: dynamics' FractureBodySettings (what a
 // btFractureRigidBody takes), except that nothing breaks unless the effects section says so.
 inline FractureBodySettings unbreakable() {
@@ -86,10 +79,10 @@ struct SceneBody {
     double friction = 0.5;     // Bullet's friction coefficient [-]
     double restitution = 0.0;  // Bullet's restitution [-]
     // From effects.fracture.<name> (fracturable, method, hybridElementThreshold,
-    // impulseThreshold, maxRefractureDepth) and the body's "resolution" (bemTriangleTarget,
-    // collisionTriangleTarget, voxelSize).
+    // impulseThreshold, maxRefractureDepth, materialNoise: amplitude, wavelength and the body's
+    // seed, which the runner combines with SceneEffects::seed) and the body's "resolution"
+    // (bemTriangleTarget, collisionTriangleTarget, voxelSize).
     FractureBodySettings fracture = unbreakable();
-    SceneMaterialNoise materialNoise;  // effects.fracture.<name>.material_noise
 
     // Never moves: a plane or mass 0 (kinematic bodies move, so they are not static).
     bool isStatic() const {

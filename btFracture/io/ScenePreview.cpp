@@ -89,7 +89,7 @@ Image ScenePreview::render(const SceneWorld& world) {
         rasterizer_.emplace(settings_, camera_, background());
     Rasterizer& rasterizer = *rasterizer_;
     for (size_t i = 0; i < world.bodies().size(); ++i) {
-        const bool plane = world.scene().bodies[i].shape.type == SceneShapeType::Plane;
+        const bool plane = world.bodies()[i].plane;
         rasterizer.draw(world.worldSurface(i), colourOf(world.bodies()[i].name),
                         plane ? Rasterizer::Faces::Both : Rasterizer::Faces::Front);
     }

@@ -5,6 +5,7 @@
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/Primitives.h>
+#include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/io/MeshReader.h>
 
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
@@ -90,8 +91,9 @@ struct SceneWorld::Impl {
     std::unique_ptr<btDbvtBroadphase> broadphase;
     std::unique_ptr<btSequentialImpulseConstraintSolver> solver;
     std::unique_ptr<btDiscreteDynamicsWorld> world;
-    std::vector<ShapeStorage> shapes;  // parallel to bodies
+    std::vector<ShapeStorage> shapes;  // one per scene body, alive as long as the world
     std::vector<std::unique_ptr<btRigidBody>> ownedBodies;
+    std::vector<std::unique_ptr<btRigidBody>> brokenBodies;  // parents that broke, deleted next frame
     std::vector<Body> bodies;
     // Kinematic bodies: start pose and constant velocities, so that poses come from the elapsed
     // time without accumulating rounding.
@@ -110,6 +112,7 @@ struct SceneWorld::Impl {
         for (auto it = ownedBodies.rbegin(); it != ownedBodies.rend(); ++it)
             if (world && *it) world->removeRigidBody(it->get());
         ownedBodies.clear();
+        brokenBodies.clear();
         shapes.clear();
         world.reset();
         solver.reset();
@@ -213,6 +216,7 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
             storage.shape = std::make_unique<btStaticPlaneShape>(toBullet(shape.normal),
                                                                  static_cast<btScalar>(shape.offset));
             body.surface = planeSurface(shape.normal, shape.offset);
+            body.plane = true;
             break;
     }
     body.surface.name = description.name;
@@ -232,6 +236,11 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
     info.m_startWorldTransform = toBullet(shapeInWorld * bodyInShape);
     std::unique_ptr<btRigidBody> rigidBody = factory.createBody(info, description, body.surface);
     if (!rigidBody) throw Error(bodyContext(scene, description) + ": the scene factory created no body");
+    if (const btFractureRigidBody* breakable = btFractureRigidBody::upcast(rigidBody.get())) {
+        body.surface = breakable->mesh();
+        body.surface.name = description.name;
+        body.volume = breakable->volume();
+    }
     rigidBody->setLinearVelocity(toBullet(description.linearVelocity));
     rigidBody->setAngularVelocity(toBullet(description.angularVelocity));
     rigidBody->setFriction(static_cast<btScalar>(description.friction));
@@ -282,6 +291,7 @@ void SceneWorld::stepFrame() {
     const btScalar h = static_cast<btScalar>(settings.dt / settings.substeps);
     // maxSubSteps = 0: exactly one internal step of h per call, with no accumulator that could
     // round to one step more or less.
+    impl_->brokenBodies.clear();
     for (int k = 0; k < settings.substeps; ++k) {
         // Kinematic bodies move at their constant velocities: pose at the end of this step, from
         // the start pose and the elapsed time. Bullet derives the velocity the contact solver
@@ -309,6 +319,32 @@ double SceneWorld::time() const {
 }
 const std::vector<SceneWorld::Body>& SceneWorld::bodies() const {
     return impl_->bodies;
+}
+
+void SceneWorld::replaceBody(const btRigidBody& parent,
+                             const std::vector<std::pair<btFractureRigidBody*, std::string>>& fragments) {
+    Impl& w = *impl_;
+    const auto found = std::find_if(w.bodies.begin(), w.bodies.end(),
+                                    [&](const Body& b) { return b.rigidBody == &parent; });
+    if (found == w.bodies.end()) throw Error("SceneWorld::replaceBody: the broken body is not in the scene");
+    std::vector<Body> pieces;
+    for (const auto& [fragment, name] : fragments) {
+        Body piece;
+        piece.name = name;
+        piece.rigidBody = fragment;
+        piece.surface = fragment->mesh();
+        piece.surface.name = name;
+        piece.volume = fragment->volume();
+        pieces.push_back(std::move(piece));
+    }
+    const auto position = w.bodies.erase(found);
+    w.bodies.insert(position, std::make_move_iterator(pieces.begin()), std::make_move_iterator(pieces.end()));
+    for (auto owned = w.ownedBodies.begin(); owned != w.ownedBodies.end(); ++owned)
+        if (owned->get() == &parent) {
+            w.brokenBodies.push_back(std::move(*owned));
+            w.ownedBodies.erase(owned);
+            break;
+        }
 }
 
 TriangleMesh SceneWorld::worldSurface(size_t index) const {

@@ -19,8 +19,9 @@
 // scene.
 //
 // Extension point: SceneWorldFactory is the one place where the world and the bodies are
-// created, so that btFracture's own btFractureDynamicsWorld / btFractureRigidBody can be built
-// from the same scene by overriding it. SceneWorld owns everything it creates.
+// created; FractureSceneWorldFactory (io/FractureSceneWorldFactory.h) builds btFracture's own
+// btFractureDynamicsWorld / btFractureRigidBody from the same scene. SceneWorld owns everything
+// it creates; a btFractureRigidBody's surface and volume are its own (body frame).
 #include <btFracture/core/TriangleMesh.h>
 #include <btFracture/io/SceneFile.h>
 
@@ -28,6 +29,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 class btBroadphaseInterface;
@@ -37,6 +39,8 @@ class btConstraintSolver;
 class btDiscreteDynamicsWorld;
 
 namespace btfracture {
+
+class btFractureRigidBody;
 
 class SceneWorldFactory {
 public:
@@ -79,10 +83,19 @@ public:
         btRigidBody* rigidBody = nullptr;  // owned by SceneWorld
         TriangleMesh surface;              // body frame (centre of mass, principal axes)
         double volume = 0.0;               // [m^3]; 0 for planes
+        bool plane = false;                // an infinite plane (its surface is a display square)
     };
     const std::vector<Body>& bodies() const;
     // Body `index`'s surface at its current pose, in world coordinates.
     TriangleMesh worldSurface(size_t index) const;
+
+    // Fracture (call from a FractureListener): `parent` left the world and `fragments` took its
+    // place; their entries replace the parent's, in the given order, with the given output names
+    // and their collision-resolution surfaces. A parent SceneWorld created is deleted at the
+    // start of the next frame (the world's ownership rule: the application deletes it after the
+    // listeners ran). Throws btfracture::Error if `parent` is not one of bodies().
+    void replaceBody(const btRigidBody& parent,
+                     const std::vector<std::pair<btFractureRigidBody*, std::string>>& fragments);
 
 private:
     struct Impl;

@@ -13,7 +13,12 @@
 #include <btFracture/core/Timer.h>
 #include <btFracture/io/ContactSheet.h>
 #include <btFracture/io/FractureRbScene.h>
+#include <btFracture/dynamics/btFractureDynamicsWorld.h>
+#include <btFracture/dynamics/btFractureRigidBody.h>
+#include <btFracture/geometry/LevelSetBody.h>
 #include <btFracture/io/FractureRecorder.h>
+#include <btFracture/io/FractureRecorderListener.h>
+#include <btFracture/io/FractureSceneWorldFactory.h>
 #include <btFracture/io/ObjWriter.h>
 #include <btFracture/io/PngFile.h>
 #include <btFracture/io/SceneFile.h>
@@ -76,7 +81,8 @@ const char* kHelp =
     "Outputs in DIR: frame_NNNNN.obj (one object per body, every outputs.obj_every_n_steps),\n"
     "frame_NNNNN.png and contact_sheet.png (every outputs.png_every_n_steps), statistics.csv (one\n"
     "row per fracture event), fragments.csv and fragment_volumes.csv/.png (fragment volumes\n"
-    "against Mott's distribution; written when something broke).\n"
+    "against Mott's distribution; written when something broke), levelset_<body>_NNN.vdb (the body's\n"
+    "OpenVDB level set right after each fracture event's cuts: grids <body>.object and <body>.cracks).\n"
     "\n"
     "Exit status: 0 success, 1 internal failure while running, 2 bad input (command line, scene,\n"
     "mesh, CSV or output folder; nothing was simulated), 3 the simulation turned non-finite (NaN or\n"
@@ -185,6 +191,7 @@ Options parseOptions(int argc, char** argv) {
 bool isRunOutput(const fs::path& file) {
     const std::string name = file.filename().string(), ext = file.extension().string();
     if (name.rfind("frame_", 0) == 0 && (ext == ".obj" || ext == ".png")) return true;
+    if (name.rfind("levelset_", 0) == 0 && ext == ".vdb") return true;
     for (const char* own : {"contact_sheet.png", "statistics.csv", "fragments.csv", "fragment_volumes.csv",
                             "fragment_volumes.png"})
         if (name == own) return true;
@@ -301,6 +308,30 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
     return text;
 }
 
+// Keeps the outputs in step with fracture: the recorder names the fragments and writes the
+// statistics row, then the scene's body list swaps the parent for the named fragments.
+class SceneFractureListener : public FractureListener {
+public:
+    SceneFractureListener(FractureRecorderListener& recorder, SceneWorld& world) : recorder_(recorder), world_(world) {}
+    void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
+                         const FractureEventInfo& info) override {
+        recorder_.onFractureEvent(parent, fragments, info);
+        std::vector<std::pair<btFractureRigidBody*, std::string>> named;
+        for (btFractureRigidBody* fragment : fragments) named.emplace_back(fragment, recorder_.nameOf(fragment));
+        world_.replaceBody(parent, named);
+    }
+
+private:
+    FractureRecorderListener& recorder_;
+    SceneWorld& world_;
+};
+
+bool anyBreakable(const Scene& scene) {
+    for (const SceneBody& body : scene.bodies)
+        if (body.fracture.fracturable) return true;
+    return false;
+}
+
 // Setup: everything that can reject the input. Errors here exit with 2.
 struct Setup {
     Scene scene;
@@ -333,10 +364,26 @@ int run(const Options& options) {
     Timer total;
     Setup setup;
     std::optional<SceneWorld> world;
+    std::optional<FractureRecorderListener> recorderListener;
     fs::path dir;
+    int levelSetFiles = 0;
     try {
         setup = setUp(options);
-        world.emplace(setup.scene);  // loads and checks every mesh before anything is written
+        // Breakable bodies: btFractureDynamicsWorld with the BEM engine; the cut observer saves
+        // every fractured level set when the scene asks for VDB output.
+        FractureSceneWorldFactory fractureFactory(setup.scene.effects.seed);
+        if (setup.scene.effects.outputs.vdb)
+            fractureFactory.setCutObserver([&](const btFractureRigidBody& body, const LevelSetBody& levelSet) {
+                std::string name = recorderListener ? recorderListener->nameOf(&body) : std::string();
+                if (name.empty()) name = body.name();
+                char file[64];
+                std::snprintf(file, sizeof file, "_%03d.vdb", ++levelSetFiles);
+                levelSet.writeVdb((dir / ("levelset_" + name + file)).string());
+            });
+        const SceneWorldFactory plainFactory;
+        const SceneWorldFactory& factory =
+            anyBreakable(setup.scene) ? static_cast<const SceneWorldFactory&>(fractureFactory) : plainFactory;
+        world.emplace(setup.scene, factory);  // loads and checks every mesh before anything is written
         dir = prepareOutput(setup.directory.string());
     } catch (const Error& e) {
         std::fprintf(stderr, "btfracture-run: error: %s\n", e.what());
@@ -347,17 +394,21 @@ int run(const Options& options) {
     const ThreadLimit threads(scene.run.threads);
 
     FractureRecorder recorder(formats.csv ? (dir / "statistics.csv").string() : std::string());
+    auto* fractureWorld = dynamic_cast<btFractureDynamicsWorld*>(&world->world());
+    std::optional<SceneFractureListener> sceneListener;
     int breakable = 0;
-    for (size_t i = 0; i < scene.bodies.size(); ++i)
-        if (scene.bodies[i].fracture.fracturable) {
-            recorder.addOriginal(scene.bodies[i].name, world->bodies()[i].volume);
-            ++breakable;
-        }
-    if (breakable > 0)
-        logf(LogLevel::Info, "btfracture-run: ", breakable,
-             " bodies are marked breakable, but this build has no fracture engine yet: they stay rigid");
-    if (formats.vdb)
-        logf(LogLevel::Warning, "btfracture-run: vdb output needs fracture level sets; none written");
+    if (fractureWorld) {
+        recorderListener.emplace(recorder, scene.world.dt / scene.world.substeps);
+        for (const auto& body : world->bodies())
+            if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody)) {
+                recorderListener->addOriginal(*b, body.name);
+                ++breakable;
+            }
+        sceneListener.emplace(*recorderListener, *world);
+        fractureWorld->addFractureListener(&*sceneListener);
+    }
+    if (formats.vdb && breakable == 0)
+        logf(LogLevel::Warning, "btfracture-run: vdb output needs breakable bodies; none in this scene");
 
     const int steps = scene.world.steps;
     const int objEvery = formats.obj ? scene.outputs.objEveryNSteps : 0;
@@ -479,6 +530,9 @@ int run(const Options& options) {
         if (formats.csv)
             item(std::string("statistics.csv") + (histogram ? ", fragments.csv, fragment_volumes.csv" : ""));
         if (histogram && formats.png) item("fragment_volumes.png");
+        if (levelSetFiles > 0)
+            item(std::to_string(levelSetFiles) + " fractured level set" + (levelSetFiles == 1 ? "" : "s") +
+                 " levelset_<body>_NNN.vdb");
         summary.add("output", written.empty() ? "none" : dir.string() + "/ : " + written);
         summary.print(setup.title);
     }

@@ -100,8 +100,8 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_EQ(pane.fracture.hybridElementThreshold, 3000);
     EXPECT_EQ(pane.fracture.maxRefractureDepth, 2);
     EXPECT_DOUBLE_EQ(pane.fracture.impulseThreshold, 0.5);
-    EXPECT_DOUBLE_EQ(pane.materialNoise.amplitude, 0.2);
-    EXPECT_EQ(pane.materialNoise.seed, 7u);
+    EXPECT_DOUBLE_EQ(pane.fracture.materialNoise.amplitude, 0.2);
+    EXPECT_EQ(pane.fracture.materialNoise.seed, 7u);
     const SceneBody& rock = s.bodies[2];
     EXPECT_TRUE(rock.fracture.fracturable);
     EXPECT_EQ(rock.fracture.method, FractureMethod::Estimated);
