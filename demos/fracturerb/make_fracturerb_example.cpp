@@ -116,13 +116,13 @@ int main(int argc, char** argv) {
            "toughness;compressive factor;remesh target;ignore crack self-intersections;material model;"
            "max cracks per BEM run;fracture method;sampling density\n"
            "%\n"
-           "% The brick breaks: concrete (E 30 GPa, nu 0.2, 2300 kg/m^3, strength 3 MPa, toughness 1 MPa "
+           "% The brick breaks: concrete (E 30 GPa, nu 0.2, 2300 kg/m^3, strength 1 MPa, toughness 0.2 MPa "
            "m^1/2,\n"
-           "% compressive factor 10), crack mesh size 1 cm, voxel 2 mm, no remesh, full BEM.\n"
-           "pBrick1;brick;0;0;0;0;0;0;0;0.01;0.002;30e9;0.2;2300;3e6;1e6;10;0;0;default;-1;0\n"
-           "% The ball is thrown at it at 9 m/s (spinning a little); the rock sleeps until something hits "
+           "% compressive factor 10), crack mesh size 1 cm, voxel 2 mm, remeshed to 800 BEM triangles, full BEM.\n"
+           "pBrick1;brick;0;0;0;0;0;0;0;0.01;0.002;30e9;0.2;2300;1e6;2e5;10;800;0;default;-1;0\n"
+           "% The ball is thrown at it at 15 m/s (spinning a little); the rock sleeps until something hits "
            "it.\n"
-           "pSphere1;ball;9;0.5;0;0;0;5;0\n"
+           "pSphere1;ball;15;0.5;0;0;0;5;0\n"
            "pRock1;rock;0;0;0;0;0;0;1\n";
     csv.close();
     if (!csv) {

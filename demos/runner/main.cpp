@@ -19,6 +19,7 @@
 #include <btFracture/io/FractureRecorder.h>
 #include <btFracture/io/FractureRecorderListener.h>
 #include <btFracture/io/FractureSceneWorldFactory.h>
+#include <btFracture/io/SceneFractureListener.h>
 #include <btFracture/io/ObjWriter.h>
 #include <btFracture/io/PngFile.h>
 #include <btFracture/io/SceneFile.h>
@@ -307,24 +308,6 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
     std::snprintf(text, sizeof text, pattern, a, b, c);
     return text;
 }
-
-// Keeps the outputs in step with fracture: the recorder names the fragments and writes the
-// statistics row, then the scene's body list swaps the parent for the named fragments.
-class SceneFractureListener : public FractureListener {
-public:
-    SceneFractureListener(FractureRecorderListener& recorder, SceneWorld& world) : recorder_(recorder), world_(world) {}
-    void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
-                         const FractureEventInfo& info) override {
-        recorder_.onFractureEvent(parent, fragments, info);
-        std::vector<std::pair<btFractureRigidBody*, std::string>> named;
-        for (btFractureRigidBody* fragment : fragments) named.emplace_back(fragment, recorder_.nameOf(fragment));
-        world_.replaceBody(parent, named);
-    }
-
-private:
-    FractureRecorderListener& recorder_;
-    SceneWorld& world_;
-};
 
 bool anyBreakable(const Scene& scene) {
     for (const SceneBody& body : scene.bodies)

@@ -78,12 +78,12 @@ TEST(FractureRb, ExampleMatchesItsGenerator) {
     EXPECT_DOUBLE_EQ(brick.density, 2300.0);
     EXPECT_DOUBLE_EQ(brick.material.youngsModulus(), 30e9);
     EXPECT_DOUBLE_EQ(brick.material.poissonRatio(), 0.2);
-    EXPECT_DOUBLE_EQ(brick.material.tensileStrength(), 3e6);
-    EXPECT_DOUBLE_EQ(brick.material.fractureToughness(), 1e6);
+    EXPECT_DOUBLE_EQ(brick.material.tensileStrength(), 1e6);
+    EXPECT_DOUBLE_EQ(brick.material.fractureToughness(), 2e5);
     EXPECT_DOUBLE_EQ(brick.material.compressiveFactor(), 10.0);
     EXPECT_TRUE(brick.fracture.fracturable);
     EXPECT_EQ(brick.fracture.method, FractureMethod::Full);
-    EXPECT_EQ(brick.fracture.bemTriangleTarget, 56);  // no remesh: the mesh itself, as FractureRB
+    EXPECT_EQ(brick.fracture.bemTriangleTarget, 800);  // the row's remesh target
     EXPECT_DOUBLE_EQ(brick.fracture.voxelSize, 0.002);
     EXPECT_NEAR((brick.position - Eigen::Vector3d(0, 0.035, 0)).norm(), 0.0, 1e-7);
 
@@ -92,7 +92,7 @@ TEST(FractureRb, ExampleMatchesItsGenerator) {
     EXPECT_NEAR(ball.shape.radius, 0.04, 1e-7);
     ASSERT_TRUE(ball.mass.has_value());
     EXPECT_NEAR(*ball.mass, 2.1, 1e-6);  // rigid: the file's mass
-    EXPECT_EQ(ball.linearVelocity, Eigen::Vector3d(9, 0.5, 0));
+    EXPECT_EQ(ball.linearVelocity, Eigen::Vector3d(15, 0.5, 0));
     EXPECT_EQ(ball.angularVelocity, Eigen::Vector3d(0, 0, 5));
     EXPECT_FALSE(ball.fracture.fracturable);
     EXPECT_EQ(ball.motion, SceneMotion::Dynamic);

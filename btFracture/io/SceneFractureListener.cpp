@@ -1,0 +1,25 @@
+#include <btFracture/io/SceneFractureListener.h>
+
+#include <btFracture/dynamics/btFractureRigidBody.h>
+
+#include <btFracture/io/FractureRecorderListener.h>
+#include <btFracture/io/SceneWorld.h>
+
+#include <string>
+#include <utility>
+
+namespace btfracture {
+
+SceneFractureListener::SceneFractureListener(FractureRecorderListener& recorder, SceneWorld& world)
+    : recorder_(recorder), world_(world) {}
+
+void SceneFractureListener::onFractureEvent(btFractureRigidBody& parent,
+                                            const std::vector<btFractureRigidBody*>& fragments,
+                                            const FractureEventInfo& info) {
+    recorder_.onFractureEvent(parent, fragments, info);
+    std::vector<std::pair<btFractureRigidBody*, std::string>> named;
+    for (btFractureRigidBody* fragment : fragments) named.emplace_back(fragment, recorder_.nameOf(fragment));
+    world_.replaceBody(parent, named);
+}
+
+}  // namespace btfracture
