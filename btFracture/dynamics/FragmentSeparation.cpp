@@ -80,16 +80,20 @@ SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies,
                                 result.pushes[k] *=
                                     options.maxPushFraction * bodies[k].length / result.pushes[k].norm();
                                 capped[k] = 1;
-                                logf(
-                                    LogLevel::Warning, "fragment separation: body ", k, " needs more than ",
-                                    options.maxPushFraction, " of its size (", bodies[k].length,
-                                    " m) to clear its overlaps; push capped, the rest is left to the solver");
+                                logf(LogLevel::Debug, "fragment separation: body ", k, " needs more than ",
+                                     options.maxPushFraction, " of its size (", bodies[k].length,
+                                     " m) to clear its overlaps; push capped");
                             }
                     }
             }
         if (!moved) break;
     }
     for (const auto& p : result.pushes) result.largestPush = std::max(result.largestPush, p.norm());
+    const auto cappedCount = std::count(capped.begin(), capped.end(), char(1));
+    if (cappedCount > 0)
+        logf(LogLevel::Warning, "fragment separation: ", cappedCount, " of ", bodies.size(),
+             " fragments need more than ", options.maxPushFraction,
+             " of their size to clear their overlaps; pushes capped there, the rest is left to the solver");
     return result;
 }
 
