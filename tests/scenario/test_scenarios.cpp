@@ -174,7 +174,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Expect{"brick", 60, {"brick"}, 0.0, 0.05},
                       Expect{"falling_boxes", 500, {"box2"}, 0.75, 1.0},
                       Expect{"bowl_drop", 420, {"bowl"}, 0.70, 0.85},
-                      Expect{"armadillos", 40, {"left", "right"}, 0.02, 0.08}),
+                      Expect{"armadillos", 40, {"left", "right"}, 0.02, 0.08},
+                      Expect{"window_pane", 15, {"pane"}, 0.005, 0.02}),
     [](const ::testing::TestParamInfo<Expect>& info) { return std::string(info.param.scene); });
 
 }  // namespace
