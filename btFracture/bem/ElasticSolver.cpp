@@ -40,7 +40,12 @@ ElasticSolver::ElasticSolver(SurfaceMesh mesh, const Material& material, const E
     Timer timer;
     operators_ = assembleBoundaryOperators(mesh_, {material.shearModulus(), material.poissonRatio()},
                                            settings.quadrature);
+    // Rows of T scaled to unit length: the regulariser then has the size of K^T K at any body
+    // size (unscaled, translation rows grow as L^2 and rotation rows as L^3 while K grows as L,
+    // so a millimetre body's K_R was singular to machine precision: rcond 2e-16). The null space,
+    // and so the solution, is the same (Eq. 2 only asks T u = 0).
     rigidModes_ = rigidModeOperator(mesh_);
+    for (Eigen::Index r = 0; r < rigidModes_.rows(); ++r) rigidModes_.row(r).normalize();
     netLoadOperator_ = netLoadOperator(mesh_);
     timings_.assembly = timer.seconds();
 

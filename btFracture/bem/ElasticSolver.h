@@ -54,7 +54,7 @@ public:
 
     const Eigen::MatrixXd& stiffness() const { return operators_.stiffness; }
     const BoundaryOperators& operators() const { return operators_; }
-    const Eigen::MatrixXd& regulariser() const { return rigidModes_; }  // T (6 x 3n), Eq. 1-2
+    const Eigen::MatrixXd& regulariser() const { return rigidModes_; }  // T (6 x 3n), Eq. 1-2, unit rows
     double regularisationWeight() const { return gamma_; }
     double reciprocalCondition() const { return rcond_; }
     const ElasticSolverTimings& timings() const { return timings_; }

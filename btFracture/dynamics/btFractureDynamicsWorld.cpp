@@ -242,12 +242,32 @@ void btFractureDynamicsWorld::noteAdded(btRigidBody* body) {
     }
 }
 
+namespace {
+
+// A breakable body must enter the world with a finite pose and velocity: NaN would spread to
+// every body it touches. Throws btfracture::Error naming the body.
+void requireFiniteState(const btRigidBody* body) {
+    const btFractureRigidBody* f = btFractureRigidBody::upcast(body);
+    if (!f) return;
+    const btTransform& t = f->getWorldTransform();
+    const btVector3 v = f->getLinearVelocity(), w = f->getAngularVelocity(), p = t.getOrigin();
+    const btQuaternion q = t.getRotation();
+    const double sum = double(v.x()) + v.y() + v.z() + w.x() + w.y() + w.z() + p.x() + p.y() + p.z() + q.x() +
+                       q.y() + q.z() + q.w();
+    if (!std::isfinite(sum))
+        throw Error(f->name() + ": non-finite position, orientation or velocity (NaN or Inf); not added to the world");
+}
+
+}  // namespace
+
 void btFractureDynamicsWorld::addRigidBody(btRigidBody* body) {
+    requireFiniteState(body);
     btDiscreteDynamicsWorld::addRigidBody(body);
     noteAdded(body);
 }
 
 void btFractureDynamicsWorld::addRigidBody(btRigidBody* body, int group, int mask) {
+    requireFiniteState(body);
     btDiscreteDynamicsWorld::addRigidBody(body, group, mask);
     noteAdded(body);
 }

@@ -85,6 +85,9 @@ public:
     // True while `object` is a fragment the world created and still holds.
     bool ownsBody(const btCollisionObject* object) const;
 
+    // Throw btfracture::Error (and add nothing) for a btFractureRigidBody with a non-finite pose or
+    // velocity. A body whose state turns non-finite later never triggers fracture (its impulse
+    // sum is NaN) and stays a plain Bullet body.
     void addRigidBody(btRigidBody* body) override;
     void addRigidBody(btRigidBody* body, int group, int mask) override;
     void removeRigidBody(btRigidBody* body) override;

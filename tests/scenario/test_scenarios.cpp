@@ -17,6 +17,8 @@
 #include <btFracture/io/SceneFractureListener.h>
 #include <btFracture/io/SceneWorld.h>
 
+#include "../support/FractureEventAccounting.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -31,54 +33,8 @@ namespace {
 
 Eigen::Vector3d eig(const btVector3& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
 
-struct EventCheck {
-    std::string body;
-    double time = 0.0;
-    int fragments = 0;
-    double volumeRatio = 0.0;     // sum of fragment volumes / parent volume
-    double momentumError = 0.0;   // relative
-    std::vector<double> volumes;  // for determinism
-};
-
-// Checks every event before the step is replayed (the parent still holds its pre-step state).
-class EventProbe : public FractureListener {
-public:
-    EventProbe(FractureRecorderListener& names, double step) : names_(names), step_(step) {}
-    void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
-                         const FractureEventInfo& info) override {
-        EventCheck e;
-        e.body = names_.nameOf(&parent);  // the recorder renames after this listener
-        e.time = static_cast<double>(info.step) * step_;
-        e.fragments = static_cast<int>(fragments.size());
-        const double M = 1.0 / parent.getInvMass();
-        const Eigen::Vector3d c = eig(parent.getCenterOfMassPosition()), v = eig(parent.getLinearVelocity()),
-                              w = eig(parent.getAngularVelocity());
-        double mass = 0.0, volume = 0.0;
-        Eigen::Vector3d momentum = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
-        for (const btFractureRigidBody* f : fragments) {
-            const double m = 1.0 / f->getInvMass();
-            mass += m;
-            volume += f->volume();
-            e.volumes.push_back(f->volume());
-            momentum += m * eig(f->getLinearVelocity());
-            moment += m * (eig(f->getCenterOfMassPosition()) - c);
-        }
-        // The world gave every fragment v + w x r at its centre, then pushed overlapping
-        // fragments apart by at most info.maxSeparationPush: that push moves r, not v, so the
-        // identity holds up to |w| * mass * push.
-        const Eigen::Vector3d expected = mass * v + w.cross(moment);
-        const double scale = M * (v.norm() + w.norm() * std::cbrt(parent.volume()));
-        e.momentumError = std::max(0.0, (momentum - expected).norm() - w.norm() * mass * info.maxSeparationPush) /
-                          std::max(1e-12, scale);
-        e.volumeRatio = volume / parent.volume();
-        events.push_back(e);
-    }
-    std::vector<EventCheck> events;
-
-private:
-    FractureRecorderListener& names_;
-    double step_;
-};
+using test::FractureEventAccounting;
+using test::FractureEventCheck;
 
 struct Expect {
     const char* scene;
@@ -88,7 +44,7 @@ struct Expect {
 };
 
 struct Outcome {
-    std::vector<EventCheck> events;
+    std::vector<FractureEventCheck> events;
     bool finite = true, inside = true;
     std::string problem;
 };
@@ -112,7 +68,7 @@ Outcome runScenario(const Expect& expect) {
     for (const auto& body : world.bodies())
         if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody)) names.addOriginal(*b, body.name);
     SceneFractureListener sceneListener(names, world);
-    EventProbe probe(names, step);
+    FractureEventAccounting probe(step, [&](const btFractureRigidBody& parent) { return names.nameOf(&parent); });
     // Order: the probe reads the parent before SceneWorld retires it; names come from the
     // recorder, which the scene listener calls.
     fractureWorld->addFractureListener(&probe);
@@ -152,11 +108,12 @@ TEST_P(Scenario, BreaksWhereExpectedConservingVolumeAndMomentum) {
     EXPECT_GE(a.events.front().time, expect.firstAfter) << expect.scene;
     EXPECT_LE(a.events.front().time, expect.firstBefore) << expect.scene;
     for (const char* body : expect.breaking)
-        EXPECT_TRUE(std::any_of(a.events.begin(), a.events.end(), [&](const EventCheck& e) { return e.body == body; }))
+        EXPECT_TRUE(std::any_of(a.events.begin(), a.events.end(), [&](const FractureEventCheck& e) { return e.body == body; }))
             << expect.scene << ": " << body << " did not break";
-    for (const EventCheck& e : a.events) {
+    for (const FractureEventCheck& e : a.events) {
         EXPECT_GE(e.fragments, 2);
         EXPECT_NEAR(e.volumeRatio, 1.0, 0.03) << expect.scene << " at t = " << e.time;
+        EXPECT_NEAR(e.massRatio, 1.0, 0.03) << expect.scene << " at t = " << e.time;
         EXPECT_LT(e.momentumError, 1e-4) << expect.scene << " at t = " << e.time;
     }
     // Same input, same output.
