@@ -7,6 +7,7 @@
 //      ground or into each other (a torus centre below its tube radius = tunnelled).
 // Prints METRIC lines; the default in CollisionShapeBuilder.h (decomposition up to 600
 // triangles, GImpact above) rests on these numbers.
+#include <btFracture/core/Primitives.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/CollisionShapeBuilder.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
@@ -22,24 +23,6 @@
 using namespace btfracture;
 
 namespace {
-
-TriangleMesh torus(double R, double r, int major, int minor) {
-    TriangleMesh m;
-    m.name = "torus";
-    for (int i = 0; i < major; ++i)
-        for (int j = 0; j < minor; ++j) {
-            const double u = 2.0 * M_PI * i / major, v = 2.0 * M_PI * j / minor;
-            m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
-                                    r * std::sin(v));
-        }
-    auto id = [&](int i, int j) { return (i % major) * minor + (j % minor); };
-    for (int i = 0; i < major; ++i)
-        for (int j = 0; j < minor; ++j) {
-            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-        }
-    return m;
-}
 
 const char* tag(CollisionShapeKind kind) {
     return kind == CollisionShapeKind::GImpactMesh ? "gimpact" : "hacd";
@@ -99,7 +82,7 @@ PileResult pile(CollisionShapeKind kind, const TriangleMesh& mesh, double tube) 
 int main() {
     const double R = 0.08, r = 0.03;
     for (const int major : {24, 32, 48}) {
-        const TriangleMesh mesh = torus(R, r, major, major / 2);
+        const TriangleMesh mesh = makeTorus(R, r, major, major / 2);
         for (const CollisionShapeKind kind :
              {CollisionShapeKind::ConvexDecomposition, CollisionShapeKind::GImpactMesh}) {
             Timer timer;
@@ -110,7 +93,7 @@ int main() {
                         mesh.triangles.size(), 1e3 * timer.seconds(), shape->convexPieces().size());
         }
     }
-    const TriangleMesh mesh = torus(R, r, 24, 12);
+    const TriangleMesh mesh = makeTorus(R, r, 24, 12);
     for (const CollisionShapeKind kind :
          {CollisionShapeKind::ConvexDecomposition, CollisionShapeKind::GImpactMesh}) {
         const PileResult p = pile(kind, mesh, r);

@@ -1,5 +1,7 @@
 // Mesh loading and checking speed on the shipped meshes, and the rigid-body runner's step rate on
 // the Fig. 1 scene. Plain table; headline lines "METRIC <name> <value> <unit>". Best of 5 runs.
+#include "BestOf.h"
+
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/SelfIntersection.h>
 #include <btFracture/core/Timer.h>
@@ -14,20 +16,6 @@
 #include <string>
 
 using namespace btfracture;
-
-namespace {
-
-double bestOf(int runs, const std::function<void()>& work) {
-    double best = 1e30;
-    for (int i = 0; i < runs; ++i) {
-        Timer timer;
-        work();
-        best = std::min(best, timer.seconds());
-    }
-    return best;
-}
-
-}  // namespace
 
 int main() {
     const std::string meshes = BTFRACTURE_MESH_DIR;

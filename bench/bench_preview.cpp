@@ -1,6 +1,8 @@
 // The runner's preview output on the Fig. 1 scene (demos/scenes/column_bunny.json, ~16,000
 // triangles with the ground square): render time per frame for each image setting, PNG encode
 // time, and the contact sheet. Best of 5 runs; headline lines "METRIC <name> <value> <unit>".
+#include "BestOf.h"
+
 #include <btFracture/core/Timer.h>
 #include <btFracture/io/ContactSheet.h>
 #include <btFracture/io/PngFile.h>
@@ -16,20 +18,6 @@
 #include <vector>
 
 using namespace btfracture;
-
-namespace {
-
-double bestOf(int runs, const std::function<void()>& work) {
-    double best = 1e30;
-    for (int i = 0; i < runs; ++i) {
-        Timer timer;
-        work();
-        best = std::min(best, timer.seconds());
-    }
-    return best;
-}
-
-}  // namespace
 
 int main() {
     const Scene scene = readSceneFile(std::string(BTFRACTURE_MESH_DIR) + "/../scenes/column_bunny.json");

@@ -94,4 +94,27 @@ TriangleMesh makeGeodesicSphere(double radius, int f) {
     return mesh;
 }
 
+TriangleMesh makeTorus(double R, double r, int major, int minor) {
+    if (!(r > 0.0 && r < R) || major < 3 || minor < 3)
+        throw Error("makeTorus: needs 0 < r < R and at least 3 x 3 segments, got R " + std::to_string(R) + ", r " +
+                    std::to_string(r) + ", " + std::to_string(major) + " x " + std::to_string(minor));
+    TriangleMesh m;
+    m.name = "torus";
+    for (int i = 0; i < major; ++i) {
+        const double u = 2.0 * M_PI * i / major;
+        for (int j = 0; j < minor; ++j) {
+            const double v = 2.0 * M_PI * j / minor;
+            m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
+                                    r * std::sin(v));
+        }
+    }
+    auto id = [&](int i, int j) { return (i % major) * minor + (j % minor); };
+    for (int i = 0; i < major; ++i)
+        for (int j = 0; j < minor; ++j) {
+            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    return m;
+}
+
 }  // namespace btfracture

@@ -20,4 +20,9 @@ TriangleMesh makeBox(const Eigen::Vector3d& halfExtents, int cellsX, int cellsY,
 // k-times subdivided icosphere.
 TriangleMesh makeGeodesicSphere(double radius, int frequency);
 
+// Torus around the z axis: major radius R, tube radius r [m], `major` x `minor` quads split into
+// two triangles each (2 major minor triangles). Throws btfracture::Error unless 0 < r < R and
+// major, minor >= 3.
+TriangleMesh makeTorus(double R, double r, int major, int minor);
+
 }  // namespace btfracture

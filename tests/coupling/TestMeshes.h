@@ -1,10 +1,9 @@
 #pragma once
-// Closed test meshes: prisms over simple polygons (non-convex L shape) and a torus.
+// Closed test meshes: prisms over simple polygons (the non-convex L shape).
 #include <btFracture/core/TriangleMesh.h>
 
 #include <Eigen/Core>
 
-#include <cmath>
 #include <string>
 #include <vector>
 
@@ -36,27 +35,6 @@ inline TriangleMesh prism(const std::vector<Eigen::Vector2d>& polygon, double h,
 // L-shaped prism: a 2a x 2a square minus its upper-right a x a quarter, thickness 2h.
 inline TriangleMesh lShape(double a, double h) {
     return prism({{0, 0}, {2 * a, 0}, {2 * a, a}, {a, a}, {a, 2 * a}, {0, 2 * a}}, h, 3, "L shape");
-}
-
-// Torus around z: major radius R, minor radius r.
-inline TriangleMesh torus(double R, double r, int major, int minor) {
-    TriangleMesh m;
-    m.name = "torus";
-    for (int i = 0; i < major; ++i) {
-        const double u = 2.0 * M_PI * i / major;
-        for (int j = 0; j < minor; ++j) {
-            const double v = 2.0 * M_PI * j / minor;
-            m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
-                                    r * std::sin(v));
-        }
-    }
-    auto id = [&](int i, int j) { return (i % major) * minor + (j % minor); };
-    for (int i = 0; i < major; ++i)
-        for (int j = 0; j < minor; ++j) {
-            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-        }
-    return m;
 }
 
 }  // namespace btfracture::test

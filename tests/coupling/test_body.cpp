@@ -108,7 +108,7 @@ TEST(FractureBody, CurvatureProxy) {
     // equator (saddle) and 6.25 1/m on the outer one.
     FractureBodySettings settings;
     settings.concaveShapeKind = CollisionShapeKind::GImpactMesh;  // no decomposition needed here
-    btFractureRigidBody ring(Material::glass(), test::torus(0.3, 0.1, 96, 32), settings);
+    btFractureRigidBody ring(Material::glass(), makeTorus(0.3, 0.1, 96, 32), settings);
     const btTransform toBody = ring.bodyInModelFrame().inverse();
     const Eigen::Vector3d innerPoint = eig(toBody * btVector3(btScalar(0.2), 0, 0));
     const Eigen::Vector3d outerPoint = eig(toBody * btVector3(btScalar(0.4), 0, 0));

@@ -45,7 +45,7 @@ TEST(CollisionShapes, DecompositionCoversANonConvexMesh) {
     EXPECT_LT(volume, 1.1 * exact);
     EXPECT_GT(volume, 0.6 * exact);  // shrunk by the margin
     // Above the triangle limit the decomposition falls back to GImpact (HACD would take seconds).
-    const TriangleMesh ring = test::torus(0.1, 0.03, 32, 12);  // 768 triangles
+    const TriangleMesh ring = makeTorus(0.1, 0.03, 32, 12);  // 768 triangles
     EXPECT_EQ(buildCollisionShape(ring, CollisionShapeKind::ConvexDecomposition)->kind(),
               CollisionShapeKind::GImpactMesh);
     const auto gimpact = buildCollisionShape(l, CollisionShapeKind::GImpactMesh);

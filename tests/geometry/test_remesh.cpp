@@ -51,28 +51,6 @@ int eulerCharacteristic(const TriangleMesh& mesh) {
            static_cast<int>(mesh.triangles.size());
 }
 
-// Torus around the y axis: major radius R, tube radius r, n x m quads split in two.
-TriangleMesh makeTorus(double R, double r, int n, int m) {
-    TriangleMesh mesh;
-    mesh.name = "torus";
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < m; ++j) {
-            const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / m;
-            mesh.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), r * std::sin(v),
-                                       (R + r * std::cos(v)) * std::sin(u));
-        }
-    auto index = [&](int i, int j) { return (i % n) * m + (j % m); };
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < m; ++j) {
-            const int a = index(i, j), b = index(i + 1, j), c = index(i + 1, j + 1), d = index(i, j + 1);
-            mesh.triangles.push_back({a, c, b});
-            mesh.triangles.push_back({a, d, c});
-        }
-    if (inspectMesh(mesh).signedVolume < 0)
-        for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
-    return mesh;
-}
-
 struct RemeshTolerances {
     double hausdorff;  // relative to the input's bounding-box diagonal
     double volume;     // relative to the input's volume

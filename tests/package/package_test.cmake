@@ -1,7 +1,10 @@
 # Installs btFracture into a fresh prefix and builds and runs tests/package/consumer against it.
 #   MODE=installed : install the current build tree (BUILD_DIR)
 #   MODE=rebuild   : configure, build and install a second tree of the whole project (SOURCE_DIR)
-#                    in the other Bullet precision, with tests, benchmarks and demos off
+#                    in the other Bullet precision (library only: benchmarks and demos off,
+#                    tests configured but not built)
+#   MODE=stability : in that second tree, build and run the stability suite (issue 9: hard cases
+#                    in both Bullet precisions)
 # Other inputs: SOURCE_DIR, BUILD_DIR, WORK_DIR, GENERATOR, BUILD_TYPE, DOUBLE (ON/OFF: the
 # precision to install and expect), NATIVE, SANITIZE, JOBS.
 function(run)
@@ -13,6 +16,15 @@ function(run)
   set(last_output "${out}" PARENT_SCOPE)
 endfunction()
 
+# The second tree persists in WORK_DIR, so a re-run only rebuilds what changed.
+set(tree "${WORK_DIR}/project-build")
+if(MODE STREQUAL "stability")
+  run(${CMAKE_COMMAND} --build "${tree}" -j ${JOBS} --target test_stability)
+  run("${tree}/tests/stability/test_stability" --gtest_brief=1)
+  message(STATUS "${last_output}")
+  return()
+endif()
+
 set(prefix "${WORK_DIR}/prefix")
 file(REMOVE_RECURSE "${prefix}" "${WORK_DIR}/consumer-build")
 
@@ -22,12 +34,10 @@ if(SANITIZE)
 endif()
 
 if(MODE STREQUAL "rebuild")
-  # The second tree persists in WORK_DIR, so a re-run only rebuilds what changed.
-  set(tree "${WORK_DIR}/project-build")
   run(${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${tree}" -G "${GENERATOR}" -DCMAKE_BUILD_TYPE=${BUILD_TYPE}
       -DBTFRACTURE_BULLET_DOUBLE=${DOUBLE} -DBTFRACTURE_NATIVE=${NATIVE} -DBTFRACTURE_SANITIZE=${SANITIZE}
-      -DBTFRACTURE_BUILD_TESTS=OFF -DBTFRACTURE_BUILD_BENCH=OFF -DBTFRACTURE_BUILD_DEMOS=OFF)
-  run(${CMAKE_COMMAND} --build "${tree}" -j ${JOBS})
+      -DBTFRACTURE_BUILD_TESTS=ON -DBTFRACTURE_BUILD_BENCH=OFF -DBTFRACTURE_BUILD_DEMOS=OFF)
+  run(${CMAKE_COMMAND} --build "${tree}" -j ${JOBS} --target btFracture)
   run(${CMAKE_COMMAND} --install "${tree}" --prefix "${prefix}")
 else()
   run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
