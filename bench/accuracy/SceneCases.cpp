@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace btfracture;
 
@@ -57,12 +58,18 @@ struct BunnyEvent : FractureListener {
         for (const btFractureRigidBody* piece : pieces) {
             volumes.push_back(piece->volume() / parent.volume());
             const TriangleMesh m = worldMesh(*piece);
-            const int offset = static_cast<int>(surface.vertices.size());
-            surface.vertices.insert(surface.vertices.end(), m.vertices.begin(), m.vertices.end());
+            std::vector<int> index(m.vertices.size(), -1);  // only the vertices of fracture faces
+            auto vertex = [&](int v) {
+                if (index[v] < 0) {
+                    index[v] = static_cast<int>(surface.vertices.size());
+                    surface.vertices.push_back(m.vertices[v]);
+                }
+                return index[v];
+            };
             for (const auto& t : m.triangles) {
                 const Eigen::Vector3d c = (m.vertices[t[0]] + m.vertices[t[1]] + m.vertices[t[2]]) / 3.0;
                 if (tree.closestPoint(c).squaredDistance > tolerance * tolerance)
-                    surface.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+                    surface.triangles.push_back({vertex(t[0]), vertex(t[1]), vertex(t[2])});
             }
         }
     }

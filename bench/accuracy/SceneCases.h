@@ -14,6 +14,7 @@ struct SceneCaseInfo {
     std::string name;
     int bemTriangles = 1000;  // BEM surface target of the bunny
     bool weak = false;        // the many-fragment variant
+    bool hybrids = true;      // also run HYBRID at three thresholds
 };
 
 std::vector<SceneCaseInfo> sceneCases(bool smoke);
