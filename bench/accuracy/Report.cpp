@@ -98,11 +98,11 @@ void writeMarkdownTable(const std::string& path, const std::vector<RunResult>& r
                                                         : fmt("%.2f", 100 * r.surfaceMean) + " / " +
                                                               fmt("%.1f", 100 * r.surfaceHausdorff);
         out << "| " << r.caseName << " | " << method << " | " << r.surfaceTriangles << " | "
-            << r.crackTriangles << " | " << r.steps << " | " << fmt("%.3f", r.fractureSeconds) << " | "
-            << (isScene(r) ? fmt("%.2f", r.engineSeconds()) : "-") << " | "
-            << (isScene(r) ? fmt("%.2f", r.rigidSeconds) : "-") << " | " << fmt("%.0f", r.peakMegabytes)
-            << " | " << orDash(r.sifError, "%.1f", 100.0) << " | " << surface << " | "
-            << (r.fragments < 0 ? std::string("-") : std::to_string(r.fragments)) << " | "
+            << r.crackTriangles << " | " << (isScene(r) ? std::string("-") : std::to_string(r.steps)) << " | "
+            << fmt("%.3f", r.fractureSeconds) << " | " << (isScene(r) ? fmt("%.2f", r.engineSeconds()) : "-")
+            << " | " << (isScene(r) ? fmt("%.2f", r.rigidSeconds) : "-") << " | "
+            << fmt("%.0f", r.peakMegabytes) << " | " << orDash(r.sifError, "%.1f", 100.0) << " | " << surface
+            << " | " << (r.fragments < 0 ? std::string("-") : std::to_string(r.fragments)) << " | "
             << orDash(r.mottKs, "%.2f") << " |" << (r.note.empty() ? "" : " ") << "\n";
     }
 }
@@ -147,13 +147,15 @@ std::vector<std::string> writeCharts(const std::string& directory, const std::ve
     byFront.title = "time per propagation step vs active front length";
     byFront.x = {"active front length [m]", false};
     byFront.y = {"step time [s]", false};
-    int colour = 0;
+    int colour = 0, estColour = 0;
     for (const auto& r : runs) {
         if (r.stepSamples.size() < 3 || (r.method != "FULL" && r.method != "EST")) continue;
         PlotSeries e, f;
         e.label = f.label = r.caseName + " " + r.method;
-        e.colour = f.colour = colour++;
+        e.colour = colour++;
+        if (r.method == "EST") f.colour = estColour++;
         for (const auto& s : r.stepSamples) {
+            if (s.seconds < 1e-3) continue;  // the closing step in which every node arrested: no work
             e.xy.emplace_back(s.elements, s.seconds);
             if (s.estimated) f.xy.emplace_back(s.frontLength, s.seconds);
         }

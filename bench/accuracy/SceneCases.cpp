@@ -96,10 +96,13 @@ Scene loadScene(const SceneCaseInfo& info, const MethodChoice& method) {
 
 std::vector<SceneCaseInfo> sceneCases(bool smoke) {
     if (smoke) return {};
-    return {{"bunny_500", 500, false},
-            {"bunny_1000", 1000, false},
-            {"bunny_2000", 2000, false},
-            {"bunny_weak_1000", 1000, true}};
+    // 2,000 triangles is left out: its FULL run alone took over 8 minutes (1.4 GB). The weak
+    // bunny runs FULL and EST only: its EST-type runs take 1-2 minutes each (the fronts grow for
+    // the whole step budget), which HYBRID would repeat three times.
+    return {{"bunny_500", 500, false, true},
+            {"bunny_750", 750, false, true},
+            {"bunny_1000", 1000, false, true},
+            {"bunny_weak_1000", 1000, true, false}};
 }
 
 RunResult runSceneCase(const SceneCaseInfo& info, const MethodChoice& method, int frames) {

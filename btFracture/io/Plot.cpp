@@ -104,7 +104,13 @@ Image plotChart(const PlotSpec& spec) {
     Image image(spec.width, spec.height, kWhite);
     const Scale sx = makeScale(spec.series, true, spec.x.logarithmic);
     const Scale sy = makeScale(spec.series, false, spec.y.logarithmic);
-    const int left = 72, right = spec.width - 16, top = 40, bottom = spec.height - 44;
+    // Legend to the right of the axes, so that it never hides a point.
+    int legendRows = 0, widest = 0;
+    for (const auto& ps : spec.series)
+        if (!ps.label.empty()) ++legendRows, widest = std::max(widest, textWidth(ps.label));
+    const int legendWidth = legendRows > 0 ? widest + 34 : 0;
+    const int left = 72, right = spec.width - 16 - (legendWidth > 0 ? legendWidth + 8 : 0), top = 40,
+              bottom = spec.height - 44;
     auto px = [&](double v) { return left + static_cast<int>(std::lround(sx.map(v) * (right - left))); };
     auto py = [&](double v) { return bottom - static_cast<int>(std::lround(sy.map(v) * (bottom - top))); };
 
@@ -145,12 +151,9 @@ Image plotChart(const PlotSpec& spec) {
         }
     }
 
-    // Legend, top right inside the axes.
-    int rows = 0, widest = 0;
-    for (const auto& s : spec.series)
-        if (!s.label.empty()) ++rows, widest = std::max(widest, textWidth(s.label));
-    if (rows > 0) {
-        const int w = widest + 34, h = rows * 12 + 8, x = right - w - 6, y = top + 6;
+    // Legend, right of the axes.
+    if (legendRows > 0) {
+        const int w = legendWidth, h = legendRows * 12 + 8, x = spec.width - 8 - w, y = top;
         image.fillRect(x, y, w, h, kWhite);
         image.drawLine(x, y, x + w, y, kBlack);
         image.drawLine(x, y + h, x + w, y + h, kBlack);

@@ -32,8 +32,8 @@ struct PlotSpec {
 // Colour `index` of a fixed palette of 8 distinguishable colours (repeats after 8).
 Rgb plotColour(int index);
 
-// Draws the chart. Points with a non-finite coordinate are skipped; an empty chart still gets
-// its axes (range [0, 1], or [1, 10] on log axes).
+// Draws the chart, the legend right of the axes. Points with a non-finite coordinate are skipped; an empty
+// chart still gets its axes (range [0, 1], or [1, 10] on log axes).
 Image plotChart(const PlotSpec& spec);
 
 }  // namespace btfracture

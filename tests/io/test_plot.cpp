@@ -1,5 +1,6 @@
 // Charts (io/Plot.h): series land where their data say on linear and log axes, in their colour,
 // non-positive values are left out on log axes, and the output is deterministic.
+#include <btFracture/io/BitmapFont.h>
 #include <btFracture/io/Plot.h>
 
 #include <gtest/gtest.h>
@@ -38,11 +39,13 @@ TEST(Plot, DrawsSeriesInTheirColourOnLogAxes) {
     EXPECT_GT(countColour(image, blue, 80, spec.width / 2), 50);
     EXPECT_GT(countColour(image, blue, spec.width / 2, spec.width - 200), 50);
     EXPECT_LT(countColour(image, green, 0, spec.width - 200), 10);
-    // Log scale: the point (10, 10) sits in the middle of both decades' span.
+    // Log scale: the point (10, 10) sits in the middle of both decades' span. The axes end where
+    // the legend (right of them: widest label + 34 pixels, 8 apart) begins.
+    const int right = spec.width - 16 - (textWidth("ignored") + 34 + 8);
     bool middle = false;
     for (int dy = -3; dy <= 3; ++dy)
         for (int dx = -3; dx <= 3; ++dx)
-            middle |= image.at((72 + spec.width - 16) / 2 + dx, (40 + spec.height - 44) / 2 + dy) == blue;
+            middle |= image.at((72 + right) / 2 + dx, (40 + spec.height - 44) / 2 + dy) == blue;
     EXPECT_TRUE(middle);
     const Image again = plotChart(spec);
     EXPECT_EQ(image.pixels(), again.pixels());
