@@ -29,6 +29,13 @@ test: build
 bench: build
 	@scripts/run-bench.sh $(BUILD)
 
+# The accuracy-vs-time study (issue 8): FULL / EST / HYBRID on every case, about 15 minutes on
+# 2 cores; runs.csv, steps.csv, table.md and the charts into ACCURACY_OUT.
+ACCURACY_OUT ?= $(OUT)/accuracy
+bench-accuracy: build
+	@mkdir -p $(ACCURACY_OUT)
+	$(BUILD)/bench/accuracy_vs_time --out $(ACCURACY_OUT)
+
 test-sanitize: deps
 	@cmake -S . -B $(BUILD)-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBTFRACTURE_SANITIZE=ON \
 	  -DBTFRACTURE_BUILD_BENCH=OFF > /dev/null
