@@ -94,19 +94,13 @@ int main() {
     CrackFronts fronts(voxel);
     fronts.addSheet(0, coarse, queries);
     int steps = 0, markers = 0;
-    for (; steps < 100; ++steps) {
+    for (; steps < 100; ++steps) {  // until no marker moves
         const FrontAdvanceResult r = fronts.advance({{0, coarse}}, queries);
+        if (r.substeps == 0) break;
         for (int node : r.arrestedCoarseNodes) coarse.advance[node].setZero();
         for (auto& [node, p] : coarse.position) p += coarse.advance[node];
-        int active = 0;
-        markers = 0;
-        for (const MarkerChain& chain : fronts.chains(0))
-            for (const FrontMarker& m : chain.markers) {
-                active += m.arrested ? 0 : 1;
-                ++markers;
-            }
-        if (active == 0) break;
     }
+    for (const MarkerChain& chain : fronts.chains(0)) markers += static_cast<int>(chain.markers.size());
     const double frontSeconds = stage.seconds();
     const int swept = fronts.sweptTriangles();
     TriangleMesh sweptSurface = fronts.takeSwept().at(0);
@@ -118,7 +112,7 @@ int main() {
     std::printf(
         "marker front: %d steps, %d markers at the end, %d swept triangles: %.3f s; their cut %.3f s; "
         "%zu fragments",
-        steps + 1, markers, swept, frontSeconds, markerCut, markerFragments.size());
+        steps, markers, swept, frontSeconds, markerCut, markerFragments.size());
     for (std::size_t k = 0; k < markerFragments.size() && k < fragments.size(); ++k)
         std::printf(" (%+.3f %% vs the planar cut's)",
                     100 * (markerFragments[k].mass.volume / fragments[k].mass.volume - 1));

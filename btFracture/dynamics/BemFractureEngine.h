@@ -11,7 +11,7 @@
 // follow the coarse front in every crack step, stop at the surface and at other cracks, stop
 // the coarse nodes whose markers all stopped, and the surface they swept is cut instead.
 // Limitation: voxelFronts is off by default: in the coupling glass-slab scene the marker cut
-// alone leaves the slab in one piece plus dust (the coarse cut gives 2 fragments); see README.
+// alone leaves the slab in one piece plus dust (the coarse cut gives 4 fragments); see README.
 #include <btFracture/core/FractureSettings.h>
 #include <btFracture/dynamics/FractureEngine.h>
 #include <btFracture/geometry/Fragment.h>

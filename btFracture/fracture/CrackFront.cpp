@@ -48,6 +48,7 @@ FrontMarker between(const FrontMarker& a, const FrontMarker& b, double t) {
     m.position = (1.0 - t) * a.position + t * b.position;
     m.direction = t < 0.5 ? a.direction : b.direction;
     m.arrested = a.arrested && b.arrested;
+    m.free = a.free && b.free;
     m.home = t < 0.5 ? a.home : b.home;
     m.coarseNode = t < 0.5 ? a.coarseNode : b.coarseNode;
     return m;
@@ -127,7 +128,10 @@ void CrackFronts::addSheet(int sheet, const CoarseFront& front, const FrontQueri
             m.coarseNode = nodes.back();
             chain.markers.push_back(m);
         }
-        for (FrontMarker& m : chain.markers) m.home = queries.crackAt(m.position);
+        for (FrontMarker& m : chain.markers) {
+            m.home = queries.crackAt(m.position);
+            m.free = !queries.insideBody(m.position);
+        }
         chains.push_back(std::move(chain));
     }
     sheets_[sheet] = std::move(chains);
@@ -353,9 +357,13 @@ FrontAdvanceResult CrackFronts::sweep(std::map<int, std::vector<Steps>>& steps, 
                     Eigen::Vector3d q = p + s[i] / substeps;
                     m.direction = dir;
                     const bool inside = queries.insideBody(q);
-                    if (!inside && !queries.insideBody(p)) {
-                        // Outside all along (a seed poking through the surface, or inserted
-                        // there): it follows the coarse front freely.
+                    if (!inside && (m.free || !queries.insideBody(p))) {
+                        // Outside already: a free marker follows the coarse front, any other
+                        // (inserted beside one stopped at the surface) stops where it is.
+                        if (!m.free) {
+                            q = p;
+                            m.arrested = true;
+                        }
                     } else if (!inside) {
                         // Bisect for the surface, stop just past it.
                         double lo = 0.0, hi = 1.0;
@@ -366,6 +374,7 @@ FrontAdvanceResult CrackFronts::sweep(std::map<int, std::vector<Steps>>& steps, 
                         q = p + hi * (q - p) + kPastSurface * spacing_ * dir;
                         m.arrested = true;
                     } else {
+                        m.free = false;
                         const int crack = queries.crackAt(q);
                         if ((crack >= 0 && crack != sheet && crack != m.home) || nearOtherSheet(sheet, q))
                             m.arrested = true;

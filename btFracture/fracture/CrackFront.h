@@ -5,9 +5,10 @@
 // interpolated along the coarse front edge nearest to it, in sub-steps of at most half a
 // voxel; markers are inserted and removed to keep neighbours 0.5 to 2 spacings apart, the
 // per-marker steps are lightly smoothed, and a marker stops for good when it leaves the body
-// or enters another crack (a marker outside the body all along, e.g. on a seed poking through
-// the surface, moves freely). The swept surface between successive polylines is kept as
-// triangles for the caller to cut into the level set (LevelSetBody::cutAlongSurface).
+// or enters another crack (a marker outside the body since it was made, on a seed poking
+// through the surface, follows the coarse front freely until it enters the body). The swept surface between
+// successive polylines is kept as triangles for the caller to cut into the level set
+// (LevelSetBody::cutAlongSurface).
 //
 // No OpenVDB, no Bullet: the body is seen through FrontQueries. Units: metres; the frame is the
 // caller's (the level set's frame in the engine).
@@ -42,6 +43,7 @@ struct FrontMarker {
     Eigen::Vector3d position = Eigen::Vector3d::Zero();   // [m]
     Eigen::Vector3d direction = Eigen::Vector3d::Zero();  // unit direction of its last move (0: never moved)
     bool arrested = false;  // left the body or met another crack: never moves again
+    bool free = false;      // outside the body since it was made (a seed poking through the surface)
     int home = -1;          // crack slab it started in (an id it may leave without stopping)
     int coarseNode = -1;    // nearest coarse front node (arrest feedback)
 };
