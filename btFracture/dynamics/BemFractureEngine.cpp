@@ -103,8 +103,8 @@ Eigen::Isometry3d fragmentFrame(const Eigen::Vector3d& centreOfMass, const Eigen
     return frame;
 }
 
-void buildBem(BemFractureState& s, const btFractureRigidBody& body, const FractureSettings& base, bool voxelFronts,
-              FractureStatistics& stats) {
+void buildBem(BemFractureState& s, const btFractureRigidBody& body, const FractureSettings& base,
+              bool voxelFronts, FractureStatistics& stats) {
     const FractureBodySettings& b = body.settings();
     // One refinement round at most: on fragment surfaces whose parts nearly touch, more rounds
     // cost minutes and still leave intersections (the solver then rejects the mesh).
@@ -131,9 +131,10 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
     s.fracture = std::make_unique<FractureSolver>(*s.solver, MaterialField(body.material(), settings.noise), settings);
     BemFractureState* state = &s;  // owned by the body, outlives its FractureSolver
     if (voxelFronts) {
-        s.fracture->setGrowthObserver([state](const CrackMesh& cracks, const std::map<int, FrontAdvance>& advances) {
-            return advanceMarkers(*state, cracks, advances);
-        });
+        s.fracture->setGrowthObserver(
+            [state](const CrackMesh& cracks, const std::map<int, FrontAdvance>& advances) {
+                return advanceMarkers(*state, cracks, advances);
+            });
     }
     if (s.carriedCracks.triangleCount() > 0) {
         const Eigen::Vector3d shift = -mesh.offset();

@@ -66,7 +66,8 @@ public:
     // Called in every step with the front advances (BEM frame) before the sheets grow; returns
     // front nodes that must stop for good (the high-resolution front's arrest feedback,
     // CrackFront.h). Unset: no observer.
-    using GrowthObserver = std::function<std::vector<int>(const CrackMesh&, const std::map<int, FrontAdvance>&)>;
+    using GrowthObserver =
+        std::function<std::vector<int>(const CrackMesh&, const std::map<int, FrontAdvance>&)>;
     void setGrowthObserver(GrowthObserver observer) { observer_ = std::move(observer); }
 
     // Front nodes that stopped for good (reached the surface head-on or met another crack).
