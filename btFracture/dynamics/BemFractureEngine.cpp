@@ -8,6 +8,7 @@
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/TractionBalance.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
+#include <btFracture/fracture/CrackFront.h>
 #include <btFracture/fracture/FractureSolver.h>
 #include <btFracture/fracture/StressIntensity.h>
 #include <btFracture/geometry/LevelSetBody.h>
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <set>
 
 namespace btfracture {
 namespace {
@@ -38,8 +40,57 @@ public:
     std::unique_ptr<ElasticSolver> solver;            // BEM frame = state frame - solver->mesh().offset()
     std::unique_ptr<TractionBalancer> balancer;       // on the BEM mesh, BEM frame
     std::unique_ptr<FractureSolver> fracture;         // borrows *solver
-    std::map<int, int> cutTriangles;                  // crack sheet -> triangles already cut
+    std::map<int, int> cutTriangles;                  // crack sheet -> triangles already cut (no markers)
+    std::unique_ptr<CrackFronts> fronts;              // voxel-resolution fronts (state frame)
 };
+
+FrontQueries frontQueries(const LevelSetBody& levelSet) {
+    return {[&levelSet](const Eigen::Vector3d& p) { return levelSet.isInsideSolid(p); },
+            [&levelSet](const Eigen::Vector3d& p) { return levelSet.crackAt(p); }};
+}
+
+// The coarse front of every sheet in the state frame, with each node's advance of this step.
+std::map<int, CoarseFront> coarseFronts(const CrackMesh& cracks, const std::map<int, FrontAdvance>& advances,
+                                        const Eigen::Vector3d& offset) {
+    std::map<int, CoarseFront> out;
+    for (const auto& e : cracks.frontEdges()) {
+        CoarseFront& f = out[cracks.sheetOf(e.triangle)];
+        f.edges.emplace_back(e.a, e.b);
+        for (const int node : {e.a, e.b}) {
+            f.position[node] = cracks.node(node) + offset;
+            const auto a = advances.find(node);
+            if (a != advances.end() && a->second.distance > 0.0)
+                f.advance[node] = a->second.distance * a->second.direction;
+        }
+    }
+    return out;
+}
+
+// FractureSolver's growth observer (issue 5): moves the markers by this step's coarse advances
+// (a new sheet gets markers, and its seed triangles join the surface to cut) and returns the
+// coarse nodes whose markers all stopped.
+std::vector<int> advanceMarkers(BemFractureState& s, const CrackMesh& cracks,
+                                const std::map<int, FrontAdvance>& advances) {
+    if (!s.fronts) s.fronts = std::make_unique<CrackFronts>(s.levelSet->voxelSize());
+    const Eigen::Vector3d offset = s.solver->mesh().offset();
+    const FrontQueries queries = frontQueries(*s.levelSet);
+    const std::map<int, CoarseFront> fronts = coarseFronts(cracks, advances, offset);
+    for (const auto& [sheet, front] : fronts) {
+        if (s.fronts->hasSheet(sheet)) continue;
+        TriangleMesh seed;
+        seed.name = "crack sheet " + std::to_string(sheet);
+        for (int t = 0; t < cracks.triangleCount(); ++t) {
+            if (cracks.sheetOf(t) != sheet) continue;
+            const int base = static_cast<int>(seed.vertices.size());
+            for (const int node : cracks.triangle(t)) seed.vertices.push_back(cracks.node(node) + offset);
+            seed.triangles.push_back({base, base + 1, base + 2});
+        }
+        s.fronts->addSurface(sheet, seed);
+        s.fronts->addSheet(sheet, front, queries);
+    }
+    const FrontAdvanceResult r = s.fronts->advance(fronts, queries);
+    return std::vector<int>(r.arrestedCoarseNodes.begin(), r.arrestedCoarseNodes.end());
+}
 
 Eigen::Vector3d toState(const BemFractureState& s, const Eigen::Vector3d& bodyPoint) { return s.bodyToState * bodyPoint; }
 
@@ -52,7 +103,8 @@ Eigen::Isometry3d fragmentFrame(const Eigen::Vector3d& centreOfMass, const Eigen
     return frame;
 }
 
-void buildBem(BemFractureState& s, const btFractureRigidBody& body, const FractureSettings& base, FractureStatistics& stats) {
+void buildBem(BemFractureState& s, const btFractureRigidBody& body, const FractureSettings& base,
+              bool voxelFronts, FractureStatistics& stats) {
     const FractureBodySettings& b = body.settings();
     // One refinement round at most: on fragment surfaces whose parts nearly touch, more rounds
     // cost minutes and still leave intersections (the solver then rejects the mesh).
@@ -77,6 +129,13 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
     settings.hybridElementThreshold = std::max(1, b.hybridElementThreshold);
     if (b.materialNoise.amplitude > 0.0) settings.noise = b.materialNoise;
     s.fracture = std::make_unique<FractureSolver>(*s.solver, MaterialField(body.material(), settings.noise), settings);
+    BemFractureState* state = &s;  // owned by the body, outlives its FractureSolver
+    if (voxelFronts) {
+        s.fracture->setGrowthObserver(
+            [state](const CrackMesh& cracks, const std::map<int, FrontAdvance>& advances) {
+                return advanceMarkers(*state, cracks, advances);
+            });
+    }
     if (s.carriedCracks.triangleCount() > 0) {
         const Eigen::Vector3d shift = -mesh.offset();
         s.carriedCracks.refreshUnknowns();
@@ -88,13 +147,25 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
     }
 }
 
-// New crack triangles of each sheet since the last cut, plus a strip beyond every front edge
-// whose nodes stopped at the surface, so that the slab reaches the surface (state frame).
+// What to cut into the level set (state frame). Sheets with voxel-resolution markers: the
+// surface they swept (seed included), after the markers of coarse nodes that stopped were
+// carried up to `extension` [m] further, to the level set's surface or a crack. Any other sheet
+// (fallback): its new coarse triangles plus a strip of width `extension` beyond every front
+// edge whose nodes stopped.
 std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
     CrackMesh& cracks = s.fracture->cracks();
     cracks.refreshUnknowns();
     const Eigen::Vector3d offset = s.solver->mesh().offset();
     std::map<int, TriangleMesh> out;
+    const auto marked = [&](int sheet) { return s.fronts && s.fronts->hasSheet(sheet); };
+    if (s.fronts) {
+        std::map<int, std::set<int>> stopped;
+        for (const auto& e : cracks.frontEdges())
+            for (const int node : {e.a, e.b})
+                if (s.fracture->isArrested(node)) stopped[cracks.sheetOf(e.triangle)].insert(node);
+        s.fronts->extend(stopped, extension, frontQueries(*s.levelSet));
+        out = s.fronts->takeSwept();
+    }
     auto vertex = [&](TriangleMesh& m, const Eigen::Vector3d& p) {
         m.vertices.push_back(p + offset);
         return static_cast<int>(m.vertices.size()) - 1;
@@ -103,7 +174,7 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
     for (int t = 0; t < cracks.triangleCount(); ++t) {
         const int sheet = cracks.sheetOf(t);
         const int index = seen[sheet]++;
-        if (index < s.cutTriangles[sheet]) continue;
+        if (marked(sheet) || index < s.cutTriangles[sheet]) continue;
         TriangleMesh& m = out[sheet];
         const auto& tri = cracks.triangle(t);
         m.triangles.push_back({vertex(m, cracks.node(tri[0])), vertex(m, cracks.node(tri[1])), vertex(m, cracks.node(tri[2]))});
@@ -114,7 +185,7 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
     for (const auto& f : frames) ahead[f.node] = f.frame.ahead;
     for (const auto& e : cracks.frontEdges()) {
         const bool stopA = s.fracture->isArrested(e.a), stopB = s.fracture->isArrested(e.b);
-        if (!stopA && !stopB) continue;
+        if ((!stopA && !stopB) || marked(cracks.sheetOf(e.triangle))) continue;
         const Eigen::Vector3d a = cracks.node(e.a), b = cracks.node(e.b);
         const Eigen::Vector3d a2 = stopA ? Eigen::Vector3d(a + extension * ahead[e.a]) : a;
         const Eigen::Vector3d b2 = stopB ? Eigen::Vector3d(b + extension * ahead[e.b]) : b;
@@ -197,7 +268,7 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body, const std
     outcome.timings.geometry += timer.seconds();
 
     timer.restart();
-    if (!s.solver) buildBem(s, body, settings_.fracture, stats);
+    if (!s.solver) buildBem(s, body, settings_.fracture, settings_.voxelFronts, stats);
     // Contacts into the BEM frame, then J n / (t_c A_e) on the nearest triangles, balanced (Eq. 6).
     std::vector<BodyContact> local = contacts;
     const Eigen::Vector3d offset = s.solver->mesh().offset();
@@ -217,7 +288,8 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body, const std
     const FractureEventReport report = s.fracture->run(q, duration);
     outcome.timings.fracture += timer.seconds() - report.solveSeconds;
     outcome.timings.bem += report.solveSeconds;
-    if (s.fracture->cracks().triangleCount() == trianglesBefore) return outcome;  // nothing cracked
+    const bool swept = s.fronts && s.fronts->sweptTriangles() > 0;
+    if (s.fracture->cracks().triangleCount() == trianglesBefore && !swept) return outcome;  // nothing cracked
 
     timer.restart();
     double meanSize = 0.0;

@@ -122,10 +122,18 @@ FractureStepRecord FractureSolver::step(int index) {
         advances[f.node] = advanceOf(f, field_.fractureToughness(f.position), m.compressiveFactor(), m.poissonRatio(),
                                      settings_.frontEdgeLength * meanSize_, settings_.minimumSpeed);
     }
+    int stopped = 0;
+    if (observer_)
+        for (const int node : observer_(cracks_, advances)) {
+            if (node < 0 || node >= cracks_.nodeCount() || arrested_[node]) continue;
+            arrested_[node] = 1;
+            advances.erase(node);
+            ++stopped;
+        }
     const GrowthResult growth =
         growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * meanSize_, arrested_);
     record.advancedNodes = growth.advancedNodes;
-    record.arrestedNodes = growth.arrestedNodes;
+    record.arrestedNodes = growth.arrestedNodes + stopped;
     if (growth.advancedNodes > 0) updateFrontState(sifs, growth.advanced);
     record.growthSeconds = timer.seconds();
     record.crackTriangles = cracks_.triangleCount();

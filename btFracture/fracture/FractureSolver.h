@@ -10,10 +10,12 @@
 #include <btFracture/bem/ElasticSolver.h>
 #include <btFracture/core/FractureSettings.h>
 #include <btFracture/fracture/MaterialField.h>
+#include <btFracture/fracture/PropagationLaw.h>
 #include <btFracture/fracture/StressIntensity.h>
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -61,6 +63,13 @@ public:
     std::vector<FrontSifs> frontSifs(bool activeOnly = false);
     FractureStepRecord step(int index);                  // one propagation step
 
+    // Called in every step with the front advances (BEM frame) before the sheets grow; returns
+    // front nodes that must stop for good (the high-resolution front's arrest feedback,
+    // CrackFront.h). Unset: no observer.
+    using GrowthObserver =
+        std::function<std::vector<int>(const CrackMesh&, const std::map<int, FrontAdvance>&)>;
+    void setGrowthObserver(GrowthObserver observer) { observer_ = std::move(observer); }
+
     // Front nodes that stopped for good (reached the surface head-on or met another crack).
     bool isArrested(int node) const { return node < static_cast<int>(arrested_.size()) && arrested_[node]; }
 
@@ -86,6 +95,7 @@ private:
     Eigen::VectorXd solvedOpenings_;     // FULL: per crack node, 3 each
     std::vector<char> arrested_;         // per crack node
     std::vector<char> seeded_;           // per surface triangle
+    GrowthObserver observer_;
 };
 
 }  // namespace btfracture

@@ -543,6 +543,11 @@ bool LevelSetBody::isInsideObject(const Eigen::Vector3d& p) const {
     return signedDistance(p) < 0.0;
 }
 
+bool LevelSetBody::isInsideSolid(const Eigen::Vector3d& p) const {
+    requireFinitePoint(p, impl_->name, "isInsideSolid");
+    return trilinear(impl_->solid->getConstAccessor(), p, impl_->voxelSize) < 0.0;
+}
+
 bool LevelSetBody::isInsideCrack(const Eigen::Vector3d& p) const {
     return crackAt(p) >= 0;
 }

@@ -68,6 +68,8 @@ public:
     double signedDistance(const Eigen::Vector3d& p) const;
     // True if p is inside material that no crack slab has removed.
     bool isInsideObject(const Eigen::Vector3d& p) const;
+    // True if p is inside the uncut solid (cracks ignored): where a crack front may still grow.
+    bool isInsideSolid(const Eigen::Vector3d& p) const;
     // True if p is inside the slab of an existing crack.
     bool isInsideCrack(const Eigen::Vector3d& p) const;
     // Id of the crack whose slab contains p, or -1 if p is in no crack slab.

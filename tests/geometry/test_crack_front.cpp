@@ -1,0 +1,379 @@
+// The high-resolution crack front (issue 5, paper §3): marker spacing, arrest at the surface and
+// at other cracks, the swept surface cut into a level set, determinism.
+#include "TestShapes.h"
+
+#include <btFracture/core/Error.h>
+#include <btFracture/fracture/CrackFront.h>
+#include <btFracture/geometry/LevelSetBody.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace btfracture {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A coarse front: `nodes` points on the circle (centre, radius) in the plane spanned by u, v,
+// each advancing radially by radius-dependent `step(angle)` [m]. Node ids start at `firstId`.
+template <class Step>
+CoarseFront circleFront(const Eigen::Vector3d& centre, const Eigen::Vector3d& u, const Eigen::Vector3d& v,
+                        double radius, int nodes, Step step, int firstId = 0) {
+    CoarseFront f;
+    for (int k = 0; k < nodes; ++k) {
+        const double a = 2.0 * kPi * k / nodes;
+        const Eigen::Vector3d radial = std::cos(a) * u + std::sin(a) * v;
+        f.position[firstId + k] = centre + radius * radial;
+        f.advance[firstId + k] = step(a) * radial;
+        f.edges.emplace_back(firstId + k, firstId + (k + 1) % nodes);
+    }
+    return f;
+}
+
+// Moves a coarse front by its advances (what the BEM front does between steps).
+void moveCoarse(CoarseFront& f) {
+    for (auto& [node, p] : f.position) p += f.advance.at(node);
+}
+
+struct SpacingRange {
+    double lo = 1e300, hi = 0.0;
+    void add(const CrackFronts& fronts) {
+        for (int sheet : fronts.sheets())
+            for (const MarkerChain& c : fronts.chains(sheet)) {
+                const std::size_t n = c.markers.size(), edges = c.closed ? n : n - 1;
+                for (std::size_t i = 0; i < edges; ++i) {
+                    const double d = (c.markers[(i + 1) % n].position - c.markers[i].position).norm();
+                    lo = std::min(lo, d);
+                    hi = std::max(hi, d);
+                }
+            }
+    }
+};
+
+FrontQueries unbounded() {
+    return {[](const Eigen::Vector3d&) { return true; }, [](const Eigen::Vector3d&) { return -1; }};
+}
+
+// A penny front stretched from 3 to 60 voxels radius with a wavy speed (curvature varies along
+// it), then shrunk back to 6: the marker spacing stays within [0.5, 2] voxels at every step.
+// Returns the final state for the determinism test.
+CrackFronts stretchAndShrink(double voxel, SpacingRange& range, std::vector<int>& markerCounts) {
+    CrackFronts fronts(voxel);
+    const Eigen::Vector3d u = Eigen::Vector3d(1, 0.2, 0).normalized(),
+                          v = Eigen::Vector3d(0, 0.3, 1).normalized();
+    const auto wavy = [&](double scale) {
+        return [=](double a) { return scale * voxel * (1.0 + 0.5 * std::sin(3.0 * a)); };
+    };
+    CoarseFront coarse = circleFront(Eigen::Vector3d(0.01, 0.02, -0.03), u, v, 3.0 * voxel, 8, wavy(2.0));
+    fronts.addSheet(0, coarse, unbounded());
+    range.add(fronts);
+    for (int step = 0; step < 57; ++step) {  // mean radius 3 -> 117 voxels (the wave stretches it unevenly)
+        fronts.advance({{0, coarse}}, unbounded());
+        moveCoarse(coarse);
+        range.add(fronts);
+        markerCounts.push_back(static_cast<int>(fronts.chains(0).front().markers.size()));
+    }
+    for (auto& [node, a] : coarse.advance) a = -0.5 * a;  // shrink: inward at half the speed
+    for (int step = 0; step < 100; ++step) {
+        fronts.advance({{0, coarse}}, unbounded());
+        moveCoarse(coarse);
+        range.add(fronts);
+        markerCounts.push_back(static_cast<int>(fronts.chains(0).front().markers.size()));
+    }
+    return fronts;
+}
+
+TEST(CrackFront, MarkerSpacingStaysWithinHalfToTwoVoxelsWhileStretchingAndShrinking) {
+    const double voxel = 1e-3;
+    SpacingRange range;
+    std::vector<int> counts;
+    const CrackFronts fronts = stretchAndShrink(voxel, range, counts);
+    const auto [fewest, most] = std::minmax_element(counts.begin(), counts.end());
+    std::printf("marker spacing over 157 steps: %.3f .. %.3f voxels; markers %d .. %d\n", range.lo / voxel,
+                range.hi / voxel, *fewest, *most);
+    EXPECT_GE(range.lo, 0.5 * voxel);
+    EXPECT_LE(range.hi, 2.0 * voxel);
+    // The front really stretched and shrank: hundreds of markers at its largest, far fewer after.
+    EXPECT_GT(*most, 400);
+    EXPECT_LT(counts.back(), *most / 4);
+    ASSERT_EQ(fronts.chains(0).size(), 1u);
+    EXPECT_TRUE(fronts.chains(0).front().closed);
+    for (const FrontMarker& m : fronts.chains(0).front().markers) EXPECT_FALSE(m.arrested);
+}
+
+// The markers follow the coarse front: after growing a round penny front from 4 to 40 voxels,
+// every marker lies within a voxel of the coarse polygon's circle band.
+TEST(CrackFront, MarkersFollowTheCoarseFront) {
+    const double voxel = 1e-3;
+    CrackFronts fronts(voxel);
+    const Eigen::Vector3d c(0, 0, 0), u = Eigen::Vector3d::UnitX(), v = Eigen::Vector3d::UnitY();
+    CoarseFront coarse = circleFront(c, u, v, 4.0 * voxel, 16, [&](double) { return 1.5 * voxel; });
+    fronts.addSheet(3, coarse, unbounded());
+    for (int step = 0; step < 24; ++step) {
+        fronts.advance({{3, coarse}}, unbounded());
+        moveCoarse(coarse);
+    }
+    const double r = 40.0 * voxel, inscribed = r * std::cos(kPi / 16);
+    for (const FrontMarker& m : fronts.chains(3).front().markers) {
+        EXPECT_NEAR(m.position.z(), 0.0, 1e-12);
+        EXPECT_GT(m.position.norm(), inscribed - voxel);
+        EXPECT_LT(m.position.norm(), r + voxel);
+    }
+    // The swept surface is the annulus between radius 4 and 40 voxels, area pi (40^2 - 4^2)
+    // voxels^2, less the chords of the 16-gon (within 3 %).
+    const auto swept = fronts.takeSwept();
+    double area = 0.0;
+    for (const auto& t : swept.at(3).triangles) {
+        const auto& p = swept.at(3).vertices;
+        area += 0.5 * (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).norm();
+    }
+    const double polygon = 0.5 * 16 * std::sin(2 * kPi / 16);  // area of the unit-radius 16-gon
+    const double expected = polygon * (r * r - 16.0 * voxel * voxel);
+    std::printf("swept area %.4g m^2, 16-gon annulus %.4g m^2\n", area, expected);
+    EXPECT_NEAR(area / expected, 1.0, 0.03);
+    EXPECT_EQ(fronts.sweptTriangles(), 0);
+}
+
+// A front reaching the surface of a sphere (radius 30 voxels) stops there: every marker ends
+// arrested within a voxel of the surface, and every coarse node is reported arrested.
+TEST(CrackFront, FrontReachingTheSurfaceArrestsThere) {
+    const double voxel = 1e-3, R = 30.0 * voxel;
+    const Eigen::Vector3d centre(0.004, -0.003, 0.002);
+    const FrontQueries sphere{[=](const Eigen::Vector3d& p) { return (p - centre).norm() < R; },
+                              [](const Eigen::Vector3d&) { return -1; }};
+    CrackFronts fronts(voxel);
+    // Off-centre penny in a tilted plane: markers meet the surface at different steps.
+    const Eigen::Vector3d u = Eigen::Vector3d(1, 0, 0.3).normalized(), v = Eigen::Vector3d(0, 1, 0);
+    CoarseFront coarse =
+        circleFront(centre + 8.0 * voxel * v, u, v, 3.0 * voxel, 12, [&](double) { return 2.5 * voxel; });
+    fronts.addSheet(0, coarse, sphere);
+    std::set<int> arrestedCoarse;
+    int steps = 0;
+    for (; steps < 40; ++steps) {
+        const FrontAdvanceResult r = fronts.advance({{0, coarse}}, sphere);
+        arrestedCoarse.insert(r.arrestedCoarseNodes.begin(), r.arrestedCoarseNodes.end());
+        for (int node : r.arrestedCoarseNodes) coarse.advance[node].setZero();
+        moveCoarse(coarse);
+        bool allStopped = true;
+        for (const FrontMarker& m : fronts.chains(0).front().markers) allStopped = allStopped && m.arrested;
+        if (allStopped) break;
+    }
+    double inside = 0.0, outside = 0.0;
+    int markers = 0;
+    for (const FrontMarker& m : fronts.chains(0).front().markers) {
+        EXPECT_TRUE(m.arrested);
+        const double d = (m.position - centre).norm() - R;  // > 0 outside
+        inside = std::max(inside, -d);
+        outside = std::max(outside, d);
+        ++markers;
+    }
+    std::printf("%d markers arrested after %d steps: up to %.3f voxels inside, %.3f outside the surface\n",
+                markers, steps + 1, inside / voxel, outside / voxel);
+    EXPECT_LT(steps, 40);
+    EXPECT_LE(inside, 1.0 * voxel);
+    EXPECT_LE(outside, 1.0 * voxel);
+    EXPECT_EQ(arrestedCoarse.size(), 12u);
+    // Nothing was swept beyond a voxel outside the sphere.
+    for (const auto& [sheet, mesh] : fronts.takeSwept())
+        for (const auto& p : mesh.vertices) EXPECT_LE((p - centre).norm() - R, 1.0 * voxel);
+}
+
+// Two coplanar penny fronts growing toward each other (centres 40 voxels apart) stop where they
+// meet: no marker or swept triangle of either gets more than 1.5 voxels past the midplane,
+// while their far sides keep growing.
+TEST(CrackFront, TwoFrontsMeetingStopInsteadOfCrossing) {
+    const double voxel = 1e-3;
+    const Eigen::Vector3d u = Eigen::Vector3d::UnitX(), v = Eigen::Vector3d::UnitY();
+    CrackFronts fronts(voxel);
+    CoarseFront a = circleFront(
+        -20.0 * voxel * u, u, v, 3.0 * voxel, 12, [&](double) { return 1.3 * voxel; }, 0);
+    CoarseFront b = circleFront(
+        20.0 * voxel * u, u, v, 3.0 * voxel, 12, [&](double) { return 1.3 * voxel; }, 100);
+    fronts.addSheet(1, a, unbounded());
+    fronts.addSheet(2, b, unbounded());
+    double reachA = -1e300, reachB = 1e300, farA = 0.0;
+    for (int step = 0; step < 20;
+         ++step) {  // radius 3 -> 29 voxels: without arrest they would overlap 18 voxels
+        const FrontAdvanceResult r = fronts.advance({{1, a}, {2, b}}, unbounded());
+        for (int node : r.arrestedCoarseNodes) (node < 100 ? a : b).advance[node].setZero();
+        moveCoarse(a);
+        moveCoarse(b);
+    }
+    for (const auto& [sheet, mesh] : fronts.takeSwept())
+        for (const auto& p : mesh.vertices) {
+            if (sheet == 1)
+                reachA = std::max(reachA, p.x());
+            else
+                reachB = std::min(reachB, p.x());
+        }
+    for (const FrontMarker& m : fronts.chains(1).front().markers) {
+        reachA = std::max(reachA, m.position.x());
+        farA = std::min(farA, m.position.x());
+    }
+    for (const FrontMarker& m : fronts.chains(2).front().markers) reachB = std::min(reachB, m.position.x());
+    std::printf(
+        "fronts meet: A reaches x = %+.2f voxels, B reaches x = %+.2f voxels; A's far side at %.1f voxels\n",
+        reachA / voxel, reachB / voxel, farA / voxel);
+    EXPECT_LT(reachA, 1.5 * voxel);
+    EXPECT_GT(reachB, -1.5 * voxel);
+    EXPECT_GT(reachA, -1.5 * voxel);  // they did meet (no gap wider than the slabs)
+    EXPECT_LT(reachB, 1.5 * voxel);
+    EXPECT_LT(farA, -45.0 * voxel);  // the far side grew on to 29 voxels radius
+}
+
+// The same marker run twice gives bit-identical markers and swept surfaces.
+TEST(CrackFront, Deterministic) {
+    SpacingRange r1, r2;
+    std::vector<int> c1, c2;
+    CrackFronts f1 = stretchAndShrink(1e-3, r1, c1);
+    CrackFronts f2 = stretchAndShrink(1e-3, r2, c2);
+    EXPECT_EQ(c1, c2);
+    const auto& m1 = f1.chains(0).front().markers;
+    const auto& m2 = f2.chains(0).front().markers;
+    ASSERT_EQ(m1.size(), m2.size());
+    for (std::size_t i = 0; i < m1.size(); ++i) EXPECT_EQ(m1[i].position, m2[i].position) << i;
+    const auto s1 = f1.takeSwept(), s2 = f2.takeSwept();
+    ASSERT_EQ(s1.at(0).vertices.size(), s2.at(0).vertices.size());
+    EXPECT_TRUE(s1.at(0).vertices == s2.at(0).vertices);
+}
+
+TEST(CrackFront, BadInputIsRejected) {
+    EXPECT_THROW(CrackFronts(0.0), Error);
+    EXPECT_THROW(CrackFronts(std::nan("")), Error);
+    CrackFronts fronts(1e-3);
+    CoarseFront f = circleFront(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
+                                0.01, 6, [](double) { return 0.0; });
+    fronts.addSheet(0, f, unbounded());
+    EXPECT_THROW(fronts.addSheet(0, f, unbounded()), Error);
+    EXPECT_THROW(fronts.chains(5), Error);
+    f.edges.emplace_back(0, 77);  // node 77 has no position
+    EXPECT_THROW(fronts.addSheet(1, f, unbounded()), Error);
+    CoarseFront nan = circleFront(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
+                                  0.01, 6, [](double) { return std::nan(""); });
+    fronts.addSheet(2, nan, unbounded());
+    EXPECT_THROW(fronts.advance({{2, nan}}, unbounded()), Error);
+}
+
+// ---- with the level set ------------------------------------------------------------------
+
+const Eigen::Vector3d kBoxSize(0.10, 0.06, 0.05);
+const double kVoxel = 0.10 / 64;
+
+FrontQueries levelSetQueries(const LevelSetBody& body) {
+    return {[&body](const Eigen::Vector3d& p) { return body.isInsideSolid(p); },
+            [&body](const Eigen::Vector3d& p) { return body.crackAt(p); }};
+}
+
+// Distance from p to the box surface [m] (> 0 outside).
+double boxDistance(const Eigen::Vector3d& p) {
+    const Eigen::Vector3d q = (p - 0.5 * kBoxSize).cwiseAbs() - 0.5 * kBoxSize;
+    const double outside = q.cwiseMax(0.0).norm();
+    return outside > 0.0 ? outside : q.maxCoeff();
+}
+
+// A small seed (hexagon fan) for sheet `sheet` plus its coarse front growing radially by `step`.
+CoarseFront seed(CrackFronts& fronts, int sheet, const LevelSetBody& body, const Eigen::Vector3d& c,
+                 const Eigen::Vector3d& u, const Eigen::Vector3d& v, double step) {
+    CoarseFront f = circleFront(c, u, v, 2.0 * kVoxel, 6, [=](double) { return step; });
+    TriangleMesh fan;
+    fan.name = "seed";
+    fan.vertices.push_back(c);
+    for (const auto& [node, p] : f.position) fan.vertices.push_back(p);
+    for (int k = 0; k < 6; ++k) fan.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
+    fronts.addSurface(sheet, fan);
+    fronts.addSheet(sheet, f, levelSetQueries(body));
+    return f;
+}
+
+// Grows the coarse front until its markers all stop (at most `steps`), arrest feedback applied.
+int growUntilArrested(CrackFronts& fronts, int sheet, CoarseFront& coarse, const LevelSetBody& body,
+                      int steps, SpacingRange& range) {
+    for (int s = 0; s < steps; ++s) {
+        const FrontAdvanceResult r = fronts.advance({{sheet, coarse}}, levelSetQueries(body));
+        for (int node : r.arrestedCoarseNodes) coarse.advance[node].setZero();
+        moveCoarse(coarse);
+        range.add(fronts);
+        bool all = true;
+        for (const MarkerChain& c : fronts.chains(sheet))
+            for (const FrontMarker& m : c.markers) all = all && m.arrested;
+        if (all) return s + 1;
+    }
+    return -1;
+}
+
+// Acceptance (issue 5): a crack grown by the markers from a seed in the box's oblique plane
+// (the plane of test_fragments' oblique cut) and cut into the level set splits the box into 2
+// fragments within 1 % of the analytic split.
+TEST(CrackFrontLevelSet, SweptSurfaceCutSplitsTheBoxAnalytically) {
+    LevelSetBody box(test::box(Eigen::Vector3d::Zero(), kBoxSize, "box"), kVoxel);
+    const Eigen::Vector3d c(0.0312, 0.03, 0.025), n = Eigen::Vector3d(1.0, 0.25, -0.15).normalized();
+    const Eigen::Vector3d u = n.cross(Eigen::Vector3d::UnitZ()).normalized(), v = n.cross(u);
+    CrackFronts fronts(kVoxel);
+    CoarseFront coarse = seed(fronts, 0, box, c, u, v, 4.0 * kVoxel);
+    SpacingRange range;
+    const int steps = growUntilArrested(fronts, 0, coarse, box, 30, range);
+    ASSERT_GT(steps, 0) << "markers still active after 30 steps";
+    double worst = 0.0;
+    for (const FrontMarker& m : fronts.chains(0).front().markers)
+        worst = std::max(worst, std::abs(boxDistance(m.position)));
+    const int triangles = fronts.sweptTriangles();
+    TriangleMesh cut = fronts.takeSwept().at(0);
+    cut.name = "marker cut";
+    box.cutAlongSurface(cut, 0);
+    const auto pieces = box.fragments(FragmentSettings());
+    ASSERT_EQ(pieces.size(), 2u);
+    const double volume = kBoxSize.prod(), left = kBoxSize.y() * kBoxSize.z() * c.x(), right = volume - left;
+    std::printf(
+        "marker cut: %d steps, %d swept triangles, spacing %.2f..%.2f voxels, markers within %.2f voxels of "
+        "the "
+        "surface; pieces %+.3f %% / %+.3f %% of analytic\n",
+        steps, triangles, range.lo / kVoxel, range.hi / kVoxel, worst / kVoxel,
+        100 * (pieces[0].mass.volume / right - 1), 100 * (pieces[1].mass.volume / left - 1));
+    EXPECT_LE(worst, 1.0 * kVoxel);
+    EXPECT_GE(range.lo, 0.5 * kVoxel);
+    EXPECT_LE(range.hi, 2.0 * kVoxel);
+    EXPECT_NEAR(pieces[0].mass.volume / right, 1.0, 0.01);
+    EXPECT_NEAR(pieces[1].mass.volume / left, 1.0, 0.01);
+}
+
+// A crack growing toward an existing crack in the level set (a full cut at y = 0.03, id 5)
+// stops in its slab: the box ends in three pieces of analytic volume (within 2 %), and no
+// marker gets past the old crack by more than a voxel.
+TEST(CrackFrontLevelSet, FrontMeetingAnExistingCrackStops) {
+    LevelSetBody box(test::box(Eigen::Vector3d::Zero(), kBoxSize, "box"), kVoxel);
+    const double y0 = 0.0301, x0 = 0.0493;
+    box.cutAlongSurface(test::sheet({0.05, y0, 0.025}, {0.07, 0, 0}, {0, 0, 0.05}, "old crack"), 5);
+    CrackFronts fronts(kVoxel);
+    CoarseFront coarse = seed(fronts, 0, box, {x0, 0.012, 0.025}, Eigen::Vector3d::UnitY(),
+                              Eigen::Vector3d::UnitZ(), 3.0 * kVoxel);
+    SpacingRange range;
+    const int steps = growUntilArrested(fronts, 0, coarse, box, 40, range);
+    ASSERT_GT(steps, 0);
+    double beyond = -1.0;
+    for (const FrontMarker& m : fronts.chains(0).front().markers)
+        beyond = std::max(beyond, m.position.y() - y0);
+    TriangleMesh cut = fronts.takeSwept().at(0);
+    for (const auto& p : cut.vertices) EXPECT_LT(p.y() - y0, 1.0 * kVoxel);
+    cut.name = "marker cut";
+    box.cutAlongSurface(cut, 0);
+    const auto pieces = box.fragments(FragmentSettings());
+    ASSERT_EQ(pieces.size(), 3u);
+    const double z = kBoxSize.z();
+    std::vector<double> expected = {kBoxSize.x() * (kBoxSize.y() - y0) * z, (kBoxSize.x() - x0) * y0 * z,
+                                    x0 * y0 * z};
+    std::sort(expected.rbegin(), expected.rend());
+    std::printf("front meets old crack after %d steps, %.2f voxels past it at most; pieces", steps,
+                beyond / kVoxel);
+    for (int k = 0; k < 3; ++k) {
+        std::printf(" %+.2f %%", 100 * (pieces[k].mass.volume / expected[k] - 1));
+        EXPECT_NEAR(pieces[k].mass.volume / expected[k], 1.0, 0.02) << k;
+    }
+    std::printf("\n");
+    EXPECT_LT(beyond, 1.0 * kVoxel);
+}
+
+}  // namespace
+}  // namespace btfracture
