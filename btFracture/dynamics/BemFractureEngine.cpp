@@ -30,9 +30,8 @@ class BemFractureState : public FractureState {
 public:
     Eigen::Isometry3d bodyToState = Eigen::Isometry3d::Identity();
     std::shared_ptr<LevelSetBody> levelSet;
-    // Closed surface the BEM mesh is remeshed from (state frame): the body's mesh, for fragments
-    // their decimated collision mesh (the fine level-set surface has sub-voxel wedges along
-    // crack rims that made the remesher stall and leave intersecting triangles).
+    // Closed surface the BEM mesh is remeshed from (state frame): the body's mesh; empty for a
+    // fragment until its first BEM is built from its level set (LevelSetBody::bemSourceMesh).
     TriangleMesh bemSource;
     CrackMesh carriedCracks;  // incomplete cracks inherited from a parent (state frame, §5.3)
     std::unique_ptr<ElasticSolver> solver;            // BEM frame = state frame - solver->mesh().offset()
@@ -52,13 +51,23 @@ Eigen::Isometry3d fragmentFrame(const Eigen::Vector3d& centreOfMass, const Eigen
     return frame;
 }
 
+// Voxels of a fragment's BEM source per BEM edge: coarse enough that crack-rim wedges and
+// slivers vanish, fine enough that the remesher has a surface to follow (measured in
+// bench_refracture_source).
+constexpr double kBemSourceVoxelsPerEdge = 3.0;
+
 void buildBem(BemFractureState& s, const btFractureRigidBody& body, const FractureSettings& base, FractureStatistics& stats) {
     const FractureBodySettings& b = body.settings();
+    if (s.bemSource.triangles.empty() && s.levelSet) {  // a fragment (§5.3): its solid, resampled
+        const Timer timer;
+        s.bemSource = s.levelSet->bemSourceMesh(b.bemTriangleTarget, kBemSourceVoxelsPerEdge);
+        logf(LogLevel::Info, body.name(), ": BEM source of ", s.bemSource.triangles.size(), " triangles from its level set in ",
+             timer.seconds(), " s");
+    }
     // One refinement round at most: on fragment surfaces whose parts nearly touch, more rounds
     // cost minutes and still leave intersections (the solver then rejects the mesh).
     // A self-intersecting source cannot give a valid BEM mesh; say so at once instead of
-    // letting the remesher spend seconds to fail. (Known: the decimated collision meshes of
-    // level-set fragments often self-intersect, so such fragments do not refracture.)
+    // letting the remesher spend seconds to fail.
     const std::size_t crossings = findSelfIntersections(s.bemSource).size();
     if (crossings > 0)
         throw Error(body.name() + ": its surface mesh has " + std::to_string(crossings) +
@@ -264,12 +273,11 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body, const std
             // The state moves on with this fragment: its BEM, cracks and its own level set.
             s.bodyToState = parentToState * childToParentBody;
             s.levelSet = f.levelSet;
-            s.bemSource = f.collisionMesh;
+            s.bemSource = TriangleMesh();  // the solver is kept; a rebuild would start from the level set
         } else if (spec.cls == FragmentSpec::Class::Breakable) {
             auto carried = std::make_unique<BemFractureState>();
             carried->bodyToState = parentToState * childToParentBody;
-            carried->levelSet = f.levelSet;
-            carried->bemSource = f.collisionMesh;
+            carried->levelSet = f.levelSet;  // its BEM source is made from it when first needed
             if (!f.incompleteCracks.empty())
                 carried->carriedCracks = s.fracture->cracks().extractSheets(f.incompleteCracks, offset);
             spec.carriedState = std::move(carried);
