@@ -19,6 +19,8 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <string>
+#include <vector>
 
 namespace btfracture {
 namespace {
@@ -58,23 +60,50 @@ constexpr double kBemSourceVoxelsPerEdge = 3.0;
 
 void buildBem(BemFractureState& s, const btFractureRigidBody& body, const FractureSettings& base, FractureStatistics& stats) {
     const FractureBodySettings& b = body.settings();
-    if (s.bemSource.triangles.empty() && s.levelSet) {  // a fragment (§5.3): its solid, resampled
+    // Sources to remesh, best first. A fragment (§5.3): its solid rebuilt from its level set,
+    // else its collision mesh (small pieces whose BEM edge spans few voxels sometimes remesh
+    // only from that one); an original body: its own mesh.
+    std::vector<TriangleMesh> sources;
+    if (s.bemSource.triangles.empty() && s.levelSet) {
         const Timer timer;
-        s.bemSource = s.levelSet->bemSourceMesh(b.bemTriangleTarget, kBemSourceVoxelsPerEdge);
-        logf(LogLevel::Info, body.name(), ": BEM source of ", s.bemSource.triangles.size(), " triangles from its level set in ",
-             timer.seconds(), " s");
+        sources.push_back(s.levelSet->bemSourceMesh(b.bemTriangleTarget, kBemSourceVoxelsPerEdge));
+        logf(LogLevel::Info, body.name(), ": BEM source of ", sources.back().triangles.size(),
+             " triangles from its level set in ", timer.seconds(), " s");
+        TriangleMesh collision = body.mesh();
+        for (auto& v : collision.vertices) v = s.bodyToState * v;
+        sources.push_back(std::move(collision));
+    } else {
+        sources.push_back(s.bemSource);
     }
     // One refinement round at most: on fragment surfaces whose parts nearly touch, more rounds
-    // cost minutes and still leave intersections (the solver then rejects the mesh).
-    // A self-intersecting source cannot give a valid BEM mesh; say so at once instead of
-    // letting the remesher spend seconds to fail.
-    const std::size_t crossings = findSelfIntersections(s.bemSource).size();
-    if (crossings > 0)
-        throw Error(body.name() + ": its surface mesh has " + std::to_string(crossings) +
-                    " self-intersecting triangle pairs; no BEM mesh can be built from it");
+    // cost minutes and still leave intersections. A self-intersecting source cannot give a
+    // valid BEM mesh: it is skipped at once instead of letting the remesher spend seconds.
     RemeshOptions remesh;
     remesh.maxRefinements = 1;
-    TriangleMesh bem = remeshForBem(s.bemSource, b.bemTriangleTarget, remesh);
+    TriangleMesh bem;
+    std::string problems;
+    for (std::size_t k = 0; k < sources.size() && bem.triangles.empty(); ++k) {
+        const char* what = sources.size() == 1 ? "its surface mesh"
+                           : k == 0             ? "its level-set surface"
+                                                : "its collision mesh";
+        const std::size_t crossings = findSelfIntersections(sources[k]).size();
+        if (crossings > 0) {
+            problems += std::string(problems.empty() ? "" : "; ") + what + " has " + std::to_string(crossings) +
+                        " self-intersecting triangle pairs";
+            continue;
+        }
+        TriangleMesh candidate = remeshForBem(sources[k], b.bemTriangleTarget, remesh);
+        const std::size_t left = findSelfIntersections(candidate).size();
+        if (left > 0) {
+            problems += std::string(problems.empty() ? "" : "; ") + "the BEM remesh of " + what + " has " +
+                        std::to_string(left) + " self-intersecting triangle pairs";
+            continue;
+        }
+        if (k > 0) logf(LogLevel::Info, body.name(), ": BEM mesh from ", what, " (", problems, ")");
+        s.bemSource = std::move(sources[k]);
+        bem = std::move(candidate);
+    }
+    if (bem.triangles.empty()) throw Error(body.name() + ": no BEM mesh can be built: " + problems);
     bem.name = body.name() + " (BEM)";
     s.solver = std::make_unique<ElasticSolver>(SurfaceMesh(std::move(bem)), body.material());
     ++stats.bemBuilds;
