@@ -84,12 +84,12 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
     std::string problems;
     for (std::size_t k = 0; k < sources.size() && bem.triangles.empty(); ++k) {
         const char* what = sources.size() == 1 ? "its surface mesh"
-                           : k == 0             ? "its level-set surface"
-                                                : "its collision mesh";
+                           : k == 0            ? "its level-set surface"
+                                               : "its collision mesh";
         const std::size_t crossings = findSelfIntersections(sources[k]).size();
         if (crossings > 0) {
-            problems += std::string(problems.empty() ? "" : "; ") + what + " has " + std::to_string(crossings) +
-                        " self-intersecting triangle pairs";
+            problems += std::string(problems.empty() ? "" : "; ") + what + " has " +
+                        std::to_string(crossings) + " self-intersecting triangle pairs";
             continue;
         }
         TriangleMesh candidate = remeshForBem(sources[k], b.bemTriangleTarget, remesh);

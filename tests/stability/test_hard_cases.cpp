@@ -54,7 +54,7 @@ struct Case {
     // Instead of the box: this closed mesh (model frame), standing on the ground; slabHalf must
     // then be its bounding box's half extents (they set the scene box and energy scale).
     TriangleMesh slabMesh;
-    double slabLift = 0.0;                              // gap under the slab [m]
+    double slabLift = 0.0;  // gap under the slab [m]
     Eigen::Vector3d slabVelocity = Eigen::Vector3d::Zero();
     FractureBodySettings settings = defaults();
     std::vector<Projectile> projectiles{Projectile{}};
@@ -90,7 +90,8 @@ public:
             if (!f->isFracturable()) return false;
             if (!followed) return true;
             const bool deeper = f->settings().refractureDepth > parent.settings().refractureDepth;
-            const bool followedDeeper = followed->settings().refractureDepth > parent.settings().refractureDepth;
+            const bool followedDeeper =
+                followed->settings().refractureDepth > parent.settings().refractureDepth;
             if (deeper != followedDeeper) return deeper;
             return f->volume() > followed->volume();
         };
@@ -229,22 +230,26 @@ Outcome simulate(const Case& c) {
         for (int i = 0; i < w.world->getNumCollisionObjects(); ++i) {
             const btRigidBody* b = btRigidBody::upcast(w.world->getCollisionObjectArray()[i]);
             if (!b || b->getInvMass() == 0) continue;
-            const btVector3 p = b->getCenterOfMassPosition(), v = b->getLinearVelocity(), a = b->getAngularVelocity();
-            if (!std::isfinite(double(p.x() + p.y() + p.z() + v.x() + v.y() + v.z() + a.x() + a.y() + a.z()))) {
+            const btVector3 p = b->getCenterOfMassPosition(), v = b->getLinearVelocity(),
+                            a = b->getAngularVelocity();
+            if (!std::isfinite(
+                    double(p.x() + p.y() + p.z() + v.x() + v.y() + v.z() + a.x() + a.y() + a.z()))) {
                 out.finite = false;
                 out.problem = "non-finite body at step " + std::to_string(s);
                 break;
             }
             // Below the ground: more than 5 % of the slab size plus Bullet's penetration slop
             // (about a millimetre at its default margins).
-            if (p.y() < -0.05 * w.size - 0.001 || std::abs(p.x()) > 50 * w.size || std::abs(p.z()) > 50 * w.size ||
-                p.y() > 50 * w.size) {
+            if (p.y() < -0.05 * w.size - 0.001 || std::abs(p.x()) > 50 * w.size ||
+                std::abs(p.z()) > 50 * w.size || p.y() > 50 * w.size) {
                 out.inside = false;
-                out.problem = "body left the scene at step " + std::to_string(s) + ", y = " + std::to_string(p.y());
+                out.problem =
+                    "body left the scene at step " + std::to_string(s) + ", y = " + std::to_string(p.y());
             }
         }
         if (chaser.pending && chased < c.chaseBalls &&
-            w.world->fractureStatistics().steps >= chaser.eventStep + static_cast<std::uint64_t>(c.chaseDelay)) {
+            w.world->fractureStatistics().steps >=
+                chaser.eventStep + static_cast<std::uint64_t>(c.chaseDelay)) {
             // One more ball just above the fragment's top; its kinetic and potential energy join the
             // budget (the energy bound is then on the start energy plus what was added).
             btVector3 lo, hi;
@@ -435,7 +440,8 @@ TEST(Stability, RefractureChain) {
     std::printf("refracture chain: deepest parent generation %d, engine failures %llu\n", o.deepest,
                 static_cast<unsigned long long>(o.stats.engineFailures));
     for (const auto& e : o.events)
-        std::printf("  event at %.3f s: generation %d, %d fragments\n", e.time, e.refractureDepth, e.fragments);
+        std::printf("  event at %.3f s: generation %d, %d fragments\n", e.time, e.refractureDepth,
+                    e.fragments);
     EXPECT_GE(o.deepest, 4);
     EXPECT_EQ(o.stats.engineFailures, 0u);
 }
