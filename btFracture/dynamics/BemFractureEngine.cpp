@@ -21,6 +21,8 @@
 #include <map>
 #include <mutex>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace btfracture {
 namespace {
@@ -32,9 +34,8 @@ class BemFractureState : public FractureState {
 public:
     Eigen::Isometry3d bodyToState = Eigen::Isometry3d::Identity();
     std::shared_ptr<LevelSetBody> levelSet;
-    // Closed surface the BEM mesh is remeshed from (state frame): the body's mesh, for fragments
-    // their decimated collision mesh (the fine level-set surface has sub-voxel wedges along
-    // crack rims that made the remesher stall and leave intersecting triangles).
+    // Closed surface the BEM mesh is remeshed from (state frame): the body's mesh; empty for a
+    // fragment until its first BEM is built from its level set (LevelSetBody::bemSourceMesh).
     TriangleMesh bemSource;
     CrackMesh carriedCracks;  // incomplete cracks inherited from a parent (state frame, §5.3)
     std::unique_ptr<ElasticSolver> solver;            // BEM frame = state frame - solver->mesh().offset()
@@ -103,21 +104,58 @@ Eigen::Isometry3d fragmentFrame(const Eigen::Vector3d& centreOfMass, const Eigen
     return frame;
 }
 
+// Voxels of a fragment's BEM source per BEM edge: coarse enough that crack-rim wedges and
+// slivers vanish, fine enough that the remesher has a surface to follow (measured in
+// bench_refracture_source).
+constexpr double kBemSourceVoxelsPerEdge = 3.0;
+
 void buildBem(BemFractureState& s, const btFractureRigidBody& body, const FractureSettings& base,
               bool voxelFronts, FractureStatistics& stats) {
     const FractureBodySettings& b = body.settings();
+    // Sources to remesh, best first. A fragment (§5.3): its solid rebuilt from its level set,
+    // else its collision mesh (small pieces whose BEM edge spans few voxels sometimes remesh
+    // only from that one); an original body: its own mesh.
+    std::vector<TriangleMesh> sources;
+    if (s.bemSource.triangles.empty() && s.levelSet) {
+        const Timer timer;
+        sources.push_back(s.levelSet->bemSourceMesh(b.bemTriangleTarget, kBemSourceVoxelsPerEdge));
+        logf(LogLevel::Info, body.name(), ": BEM source of ", sources.back().triangles.size(),
+             " triangles from its level set in ", timer.seconds(), " s");
+        TriangleMesh collision = body.mesh();
+        for (auto& v : collision.vertices) v = s.bodyToState * v;
+        sources.push_back(std::move(collision));
+    } else {
+        sources.push_back(s.bemSource);
+    }
     // One refinement round at most: on fragment surfaces whose parts nearly touch, more rounds
-    // cost minutes and still leave intersections (the solver then rejects the mesh).
-    // A self-intersecting source cannot give a valid BEM mesh; say so at once instead of
-    // letting the remesher spend seconds to fail. (Known: the decimated collision meshes of
-    // level-set fragments often self-intersect, so such fragments do not refracture.)
-    const std::size_t crossings = findSelfIntersections(s.bemSource).size();
-    if (crossings > 0)
-        throw Error(body.name() + ": its surface mesh has " + std::to_string(crossings) +
-                    " self-intersecting triangle pairs; no BEM mesh can be built from it");
+    // cost minutes and still leave intersections. A self-intersecting source cannot give a
+    // valid BEM mesh: it is skipped at once instead of letting the remesher spend seconds.
     RemeshOptions remesh;
     remesh.maxRefinements = 1;
-    TriangleMesh bem = remeshForBem(s.bemSource, b.bemTriangleTarget, remesh);
+    TriangleMesh bem;
+    std::string problems;
+    for (std::size_t k = 0; k < sources.size() && bem.triangles.empty(); ++k) {
+        const char* what = sources.size() == 1 ? "its surface mesh"
+                           : k == 0            ? "its level-set surface"
+                                               : "its collision mesh";
+        const std::size_t crossings = findSelfIntersections(sources[k]).size();
+        if (crossings > 0) {
+            problems += std::string(problems.empty() ? "" : "; ") + what + " has " +
+                        std::to_string(crossings) + " self-intersecting triangle pairs";
+            continue;
+        }
+        TriangleMesh candidate = remeshForBem(sources[k], b.bemTriangleTarget, remesh);
+        const std::size_t left = findSelfIntersections(candidate).size();
+        if (left > 0) {
+            problems += std::string(problems.empty() ? "" : "; ") + "the BEM remesh of " + what + " has " +
+                        std::to_string(left) + " self-intersecting triangle pairs";
+            continue;
+        }
+        if (k > 0) logf(LogLevel::Info, body.name(), ": BEM mesh from ", what, " (", problems, ")");
+        s.bemSource = std::move(sources[k]);
+        bem = std::move(candidate);
+    }
+    if (bem.triangles.empty()) throw Error(body.name() + ": no BEM mesh can be built: " + problems);
     bem.name = body.name() + " (BEM)";
     s.solver = std::make_unique<ElasticSolver>(SurfaceMesh(std::move(bem)), body.material());
     ++stats.bemBuilds;
@@ -336,12 +374,11 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body, const std
             // The state moves on with this fragment: its BEM, cracks and its own level set.
             s.bodyToState = parentToState * childToParentBody;
             s.levelSet = f.levelSet;
-            s.bemSource = f.collisionMesh;
+            s.bemSource = TriangleMesh();  // the solver is kept; a rebuild would start from the level set
         } else if (spec.cls == FragmentSpec::Class::Breakable) {
             auto carried = std::make_unique<BemFractureState>();
             carried->bodyToState = parentToState * childToParentBody;
-            carried->levelSet = f.levelSet;
-            carried->bemSource = f.collisionMesh;
+            carried->levelSet = f.levelSet;  // its BEM source is made from it when first needed
             if (!f.incompleteCracks.empty())
                 carried->carriedCracks = s.fracture->cracks().extractSheets(f.incompleteCracks, offset);
             spec.carriedState = std::move(carried);

@@ -60,8 +60,9 @@ struct Fragment {
     // separating overlaps, ConvexPenetration.h).
     TriangleMesh convexHull;
 
-    // Breakable and KeepsParentSolver only (§5.3). surfaceMesh: the closed fine surface that a
-    // new BEM is built from (incomplete cracks excluded; the BEM remesher coarsens it).
+    // Breakable and KeepsParentSolver only (§5.3). surfaceMesh: the closed fine surface
+    // (incomplete cracks excluded). A new BEM is not remeshed from it (its sub-voxel wedges along
+    // crack rims stall the remesher) but from levelSet->bemSourceMesh().
     // incompleteCracks: ids of the cracks that end inside this fragment, sorted; their sheets
     // and fronts are the caller's data. levelSet: the fragment as a body of its own, with these
     // cracks still cut into it, ready for further cuts.

@@ -17,6 +17,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +39,16 @@ std::string describePoint(const Eigen::Vector3d& p) {
     std::ostringstream out;
     out << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
     return out.str();
+}
+
+// Runs f on one thread. OpenVDB's meshToVolume widens its narrow band in parallel, and a task
+// reads neighbouring leaves that other tasks are still updating, so a voxel's closest triangle
+// (and our exact distance from it) could depend on thread timing: fragment volumes then differed
+// in the last bits between identical runs under load. On one thread the order is fixed.
+template <typename F>
+auto serially(F&& f) {
+    tbb::task_arena arena(1);
+    return arena.execute(std::forward<F>(f));
 }
 
 // Triangles given to OpenVDB in index space (double precision, no copy of the mesh).
@@ -379,11 +390,11 @@ MassProperties integrateMass(const FloatGrid& phi) {
     return p;
 }
 
-TriangleMesh meshFromGrid(const FloatGrid& phi, const std::string& name, double adaptivity) {
+TriangleMesh meshFromGrid(const FloatGrid& phi, const std::string& name, double adaptivity, double isovalue) {
     std::vector<openvdb::Vec3s> points;
     std::vector<openvdb::Vec3I> triangles;
     std::vector<openvdb::Vec4I> quads;
-    openvdb::tools::volumeToMesh(phi, points, triangles, quads, 0.0, adaptivity);
+    openvdb::tools::volumeToMesh(phi, points, triangles, quads, isovalue, adaptivity);
 
     TriangleMesh mesh;
     mesh.name = name;
@@ -501,9 +512,11 @@ LevelSetBody::LevelSetBody(const TriangleMesh& closedMesh, double voxelSize)
     // which smooths bumps from overlapping parts, would only bias the field (it costs 0.7 % of
     // the armadillo's volume and 4 % of a sphere's curvature).
     Int32Grid::Ptr closest = Int32Grid::create(-1);
-    b.solid = openvdb::tools::meshToVolume<FloatGrid>(adapter, grid->transform(), kHalfWidthVoxels,
-                                                      kHalfWidthVoxels,
-                                                      openvdb::tools::DISABLE_RENORMALIZATION, closest.get());
+    b.solid = serially([&] {
+        return openvdb::tools::meshToVolume<FloatGrid>(
+            adapter, grid->transform(), kHalfWidthVoxels, kHalfWidthVoxels,
+            openvdb::tools::DISABLE_RENORMALIZATION, closest.get());
+    });
     exactNarrowBand(*b.solid, *closest, mesh);
     b.solid->setGridClass(openvdb::GRID_LEVEL_SET);
     b.crack = makeLevelSet(voxelSize);
@@ -614,6 +627,55 @@ TriangleMesh LevelSetBody::collisionMesh(int targetTriangles) const {
     return collisionMeshFromGrid(*impl_->solid, targetTriangles, impl_->name + " (collision)", nullptr);
 }
 
+TriangleMesh LevelSetBody::bemSourceMesh(int targetTriangles, double voxelsPerEdge) const {
+    const Impl& b = *impl_;
+    const std::string name = b.name + " (BEM source)";
+    if (targetTriangles < 4)
+        throw Error(name + ": BEM target of " + std::to_string(targetTriangles) + " triangles; need >= 4");
+    if (!std::isfinite(voxelsPerEdge) || voxelsPerEdge <= 0.0)
+        throw Error(name + ": voxels per BEM edge must be finite and > 0, got " +
+                    std::to_string(voxelsPerEdge));
+    const TriangleMesh fine = meshFromGrid(*b.solid, name);
+    double area = 0.0;
+    for (const auto& t : fine.triangles)
+        area += 0.5 * (fine.vertices[t[1]] - fine.vertices[t[0]])
+                          .cross(fine.vertices[t[2]] - fine.vertices[t[0]])
+                          .norm();
+    const double edge = std::sqrt(4.0 * area / (std::sqrt(3.0) * targetTriangles));
+    // At least two body voxels: at the body's own resolution the crack-rim wedges would stay.
+    const double dx = std::max(edge / voxelsPerEdge, 2.0 * b.voxelSize);
+    if (dx > edge / voxelsPerEdge)
+        logf(LogLevel::Debug, name, ": BEM edge ", edge, " m is within ", 2.0 * voxelsPerEdge,
+             " body voxels; its source is rebuilt at two body voxels, ", edge / dx, " per edge");
+    // Mesh -> level set at the coarse voxel size (OpenVDB signs it by flood fill and
+    // renormalises, so a fine mesh that touches itself at a wedge is no problem) -> mesh.
+    FloatGrid::Ptr grid = makeLevelSet(dx);
+    const IndexSpaceTriangles adapter{fine.vertices, fine.triangles, 1.0 / dx};
+    FloatGrid::Ptr coarse = serially([&] {
+        return openvdb::tools::meshToVolume<FloatGrid>(adapter, grid->transform(), kHalfWidthVoxels,
+                                                       kHalfWidthVoxels);
+    });
+    coarse->setGridClass(openvdb::GRID_LEVEL_SET);
+    TriangleMesh mesh = meshFromGrid(*coarse, name);
+    // The coarse surface cuts convex parts short (by ~3 % of a piece's volume at 3 voxels per
+    // edge): offset it by the volume deficit spread over its area, at most half a coarse voxel.
+    double volume = 0.0, coarseArea = 0.0;
+    for (const auto& t : mesh.triangles) {
+        const Eigen::Vector3d &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
+        volume += p.dot(q.cross(r)) / 6.0;
+        coarseArea += 0.5 * (q - p).cross(r - p).norm();
+    }
+    if (!(coarseArea > 0.0)) return mesh;  // nothing left at this resolution; the caller reports it
+    const double wanted = (b.mass.volume - volume) / coarseArea;
+    const double offset = std::clamp(wanted, -0.5 * dx, 0.5 * dx);
+    if (offset != wanted)
+        logf(LogLevel::Info, name, ": volume offset ", wanted, " m limited to half a coarse voxel (", offset,
+             " m); the BEM source keeps ", 100.0 * (volume + offset * coarseArea) / b.mass.volume,
+             " % of the volume");
+    TriangleMesh shifted = meshFromGrid(*coarse, name, 0.0, offset);
+    return shifted.triangles.size() >= 4 ? shifted : mesh;
+}
+
 void LevelSetBody::writeVdb(const std::string& path) const {
     const Impl& b = *impl_;
     levelset::FloatGrid::Ptr object = b.object->deepCopy();
@@ -668,8 +730,11 @@ void LevelSetBody::cutAlongSurface(const TriangleMesh& sheet, int crackId) {
     Int32Grid::Ptr nearest = Int32Grid::create(-1);
     const IndexSpaceTriangles adapter{kept.vertices, kept.triangles, 1.0 / dx};
     const float band = static_cast<float>(kHalfWidthVoxels + kCrackHalfThicknessVoxels + 1.0);
-    FloatGrid::Ptr distance = openvdb::tools::meshToVolume<FloatGrid>(
-        adapter, b.solid->transform(), band, band, openvdb::tools::UNSIGNED_DISTANCE_FIELD, nearest.get());
+    FloatGrid::Ptr distance = serially([&] {
+        return openvdb::tools::meshToVolume<FloatGrid>(adapter, b.solid->transform(), band, band,
+                                                       openvdb::tools::UNSIGNED_DISTANCE_FIELD,
+                                                       nearest.get());
+    });
 
     const int base = static_cast<int>(b.crackTriangles.size());
     for (const auto& t : kept.triangles)

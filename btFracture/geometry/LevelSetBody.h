@@ -90,6 +90,15 @@ public:
     // Closed manifold mesh of the solid (cracks closed) with at most targetTriangles triangles,
     // decimated from the level set's mesh (MeshDecimation.h).
     TriangleMesh collisionMesh(int targetTriangles) const;
+    // Closed surface a new BEM of about targetTriangles triangles is remeshed from (§5.3): the
+    // solid (incomplete cracks filled, as for mass and collision), rebuilt as a level set with
+    // voxels of L / voxelsPerEdge [m] (L: edge length of targetTriangles equilateral triangles
+    // tiling the solid's surface; never finer than voxelSize()) and meshed there. At that
+    // resolution the sub-voxel wedges that crack sheets leave along the rims of the fine
+    // surface, and slivers thinner than a coarse voxel, are gone; the fine surface's wedges make
+    // decimated meshes self-intersect and stall the remesher. Throws btfracture::Error naming the
+    // body for targetTriangles < 4 or voxelsPerEdge not finite and > 0.
+    TriangleMesh bemSourceMesh(int targetTriangles, double voxelsPerEdge) const;
 
     // Writes the level set to an OpenVDB file at `path`: grids "<name>.object" (the cut object,
     // what fragments are segmented from) and "<name>.cracks" (the union of crack slabs), both

@@ -36,9 +36,11 @@ FloatGrid::Ptr makeLevelSet(double voxelSize);
 // Deterministic: independent of the thread count.
 MassProperties integrateMass(const FloatGrid& phi);
 
-// Closed triangle mesh of the zero level set, outward oriented; adaptivity as in OpenVDB's
-// volumeToMesh (0: one quad per surface voxel face, split into two triangles).
-TriangleMesh meshFromGrid(const FloatGrid& phi, const std::string& name, double adaptivity = 0.0);
+// Closed triangle mesh of the level set phi = isovalue [m] (0: the surface), outward oriented;
+// adaptivity as in OpenVDB's volumeToMesh (0: one quad per surface voxel face, split into two
+// triangles).
+TriangleMesh meshFromGrid(const FloatGrid& phi, const std::string& name, double adaptivity = 0.0,
+                          double isovalue = 0.0);
 
 // Closed manifold mesh of the zero level set with at most targetTriangles triangles (decimated).
 // `fineMesh`, if given, must be meshFromGrid(phi) (saves re-meshing on the fallback path).
