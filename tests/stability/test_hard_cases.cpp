@@ -294,7 +294,12 @@ Outcome expectStable(const Case& c, const char* name, size_t deterministicEvents
                 static_cast<unsigned long long>(a.stats.engineFailures));
     if (!a.events.empty()) {
         const Outcome b = simulate(c);
-        EXPECT_EQ(a.events.size(), b.events.size()) << name;
+        // A case known to diverge after `deterministicEvents` events (the chain) may end with
+        // another event count; it must reach the compared events in both runs.
+        if (a.events.size() <= deterministicEvents) {
+            EXPECT_EQ(a.events.size(), b.events.size()) << name;
+        }
+        EXPECT_GE(std::min(a.events.size(), b.events.size()), std::min(a.events.size(), deterministicEvents)) << name;
         for (size_t i = 0; i < std::min({a.events.size(), b.events.size(), deterministicEvents}); ++i)
             EXPECT_EQ(a.events[i].volumes, b.events[i].volumes) << name << " event " << i << " at t = " << a.events[i].time;
         if (a.events.size() > deterministicEvents) return a;
