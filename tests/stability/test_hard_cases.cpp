@@ -11,12 +11,12 @@
 #include <btFracture/dynamics/BemFractureEngine.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
-#include <btFracture/io/MeshReader.h>
 
 #include <btBulletDynamicsCommon.h>
 
 #include <gtest/gtest.h>
 
+#include "../geometry/TestShapes.h"
 #include "../support/FractureEventAccounting.h"
 
 #include <algorithm>
@@ -461,27 +461,15 @@ TEST(Stability, RefractureChain) {
     EXPECT_EQ(o.stats.engineFailures, 0u);
 }
 
-// Bunny of demos/meshes, 0.3 m long, centred on its bounding box (half extents in `half`).
-TriangleMesh bunnyMesh(Eigen::Vector3d& half) {
-    TriangleMesh m = readMesh(std::string(BTFRACTURE_MESH_DIR) + "/bunny.obj");
-    Eigen::Vector3d lo = m.vertices.front(), hi = lo;
-    for (const auto& p : m.vertices) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    const double scale = 0.3 / (hi - lo).maxCoeff();
-    for (auto& p : m.vertices) p = (p - 0.5 * (lo + hi)) * scale;
-    half = 0.5 * scale * (hi - lo);
-    m.name = "bunny";
-    return m;
-}
-
 // Issue 6: a curved fragment breaks again. The ball breaks a glass bunny; the largest fracturable
 // piece (curved, with crack faces) then gets its BEM from its level set and breaks when the
 // next ball hits it.
 TEST(Stability, CurvedFragmentBreaksAgain) {
     Case c;
-    c.slabMesh = bunnyMesh(c.slabHalf);
+    c.slabMesh = test::demoMesh("bunny.obj", 0.3);  // centred on its bounding box
+    c.slabMesh.name = "bunny";
+    c.slabHalf.setZero();
+    for (const auto& p : c.slabMesh.vertices) c.slabHalf = c.slabHalf.cwiseMax(p.cwiseAbs());
     c.settings.maxRefractureDepth = 1;
     c.settings.bemTriangleTarget = 500;
     c.steps = 120;
