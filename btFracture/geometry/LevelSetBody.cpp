@@ -41,6 +41,16 @@ std::string describePoint(const Eigen::Vector3d& p) {
     return out.str();
 }
 
+// Total area of a triangle mesh's faces [m^2].
+double surfaceArea(const TriangleMesh& mesh) {
+    double area = 0.0;
+    for (const auto& t : mesh.triangles)
+        area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                          .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
+                          .norm();
+    return area;
+}
+
 // Runs f on one thread. OpenVDB's meshToVolume widens its narrow band in parallel, and a task
 // reads neighbouring leaves that other tasks are still updating, so a voxel's closest triangle
 // (and our exact distance from it) could depend on thread timing: fragment volumes then differed
@@ -636,12 +646,7 @@ TriangleMesh LevelSetBody::bemSourceMesh(int targetTriangles, double voxelsPerEd
         throw Error(name + ": voxels per BEM edge must be finite and > 0, got " +
                     std::to_string(voxelsPerEdge));
     const TriangleMesh fine = meshFromGrid(*b.solid, name);
-    double area = 0.0;
-    for (const auto& t : fine.triangles)
-        area += 0.5 * (fine.vertices[t[1]] - fine.vertices[t[0]])
-                          .cross(fine.vertices[t[2]] - fine.vertices[t[0]])
-                          .norm();
-    const double edge = std::sqrt(4.0 * area / (std::sqrt(3.0) * targetTriangles));
+    const double edge = std::sqrt(4.0 * surfaceArea(fine) / (std::sqrt(3.0) * targetTriangles));
     // At least two body voxels: at the body's own resolution the crack-rim wedges would stay.
     const double dx = std::max(edge / voxelsPerEdge, 2.0 * b.voxelSize);
     if (dx > edge / voxelsPerEdge)
@@ -659,12 +664,10 @@ TriangleMesh LevelSetBody::bemSourceMesh(int targetTriangles, double voxelsPerEd
     TriangleMesh mesh = meshFromGrid(*coarse, name);
     // The coarse surface cuts convex parts short (by ~3 % of a piece's volume at 3 voxels per
     // edge): offset it by the volume deficit spread over its area, at most half a coarse voxel.
-    double volume = 0.0, coarseArea = 0.0;
-    for (const auto& t : mesh.triangles) {
-        const Eigen::Vector3d &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
-        volume += p.dot(q.cross(r)) / 6.0;
-        coarseArea += 0.5 * (q - p).cross(r - p).norm();
-    }
+    double volume = 0.0;
+    for (const auto& t : mesh.triangles)
+        volume += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]])) / 6.0;
+    const double coarseArea = surfaceArea(mesh);
     if (!(coarseArea > 0.0)) return mesh;  // nothing left at this resolution; the caller reports it
     const double wanted = (b.mass.volume - volume) / coarseArea;
     const double offset = std::clamp(wanted, -0.5 * dx, 0.5 * dx);
