@@ -65,18 +65,20 @@ int main() {
     for (int f : {5, 7, 10, 14}) rows.push_back(measure("sphere", makeGeodesicSphere(0.1, f), material));
     TriangleMesh bunny = readMesh(std::string(BTFRACTURE_MESH_DIR) + "/bunny.obj");
     for (auto& v : bunny.vertices) v *= 0.045;  // 0.44 m tall, as in the demo scenes
-    for (int target : {500, 1000, 2000, 4000}) rows.push_back(measure("bunny", remeshForBem(bunny, target), material));
+    for (int target : {500, 1000, 2000, 4000})
+        rows.push_back(measure("bunny", remeshForBem(bunny, target), material));
 
-    std::printf("%-8s %9s %8s %10s %10s %10s %8s %9s %12s %12s\n", "mesh", "triangles", "unknowns", "assembly_s",
-                "K^TK_s", "factor_s", "solve_s", "memory_MB", "factor_GF/s", "plainLLT_GF/s");
+    std::printf("%-8s %9s %8s %10s %10s %10s %8s %9s %12s %12s\n", "mesh", "triangles", "unknowns",
+                "assembly_s", "K^TK_s", "factor_s", "solve_s", "memory_MB", "factor_GF/s", "plainLLT_GF/s");
     for (const Row& r : rows)
-        std::printf("%-8s %9d %8d %10.3f %10.3f %10.3f %8.4f %9.1f %12.1f %12.1f\n", r.mesh.c_str(), r.triangles,
-                    r.unknowns, r.assembly, r.regularisation, r.factorisation, r.solve, r.megabytes, r.factorGflops,
-                    r.plainGflops);
+        std::printf("%-8s %9d %8d %10.3f %10.3f %10.3f %8.4f %9.1f %12.1f %12.1f\n", r.mesh.c_str(),
+                    r.triangles, r.unknowns, r.assembly, r.regularisation, r.factorisation, r.solve,
+                    r.megabytes, r.factorGflops, r.plainGflops);
     const Row& at2k = rows[2];  // the 2,000-triangle sphere
     const Row& bunny2k = rows[6];
     std::printf("METRIC bem_init_2k_s %.3f s\n", at2k.assembly + at2k.regularisation + at2k.factorisation);
-    std::printf("METRIC bem_init_bunny_2k_s %.3f s\n", bunny2k.assembly + bunny2k.regularisation + bunny2k.factorisation);
+    std::printf("METRIC bem_init_bunny_2k_s %.3f s\n",
+                bunny2k.assembly + bunny2k.regularisation + bunny2k.factorisation);
     std::printf("METRIC bem_factor_efficiency %.2f fraction\n", at2k.factorGflops / at2k.plainGflops);
     return 0;
 }

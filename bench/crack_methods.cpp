@@ -56,7 +56,8 @@ int main() {
     const ElasticSolver solver(SurfaceMesh(makeBox({0.2, 0.2, 0.2}, 13, 13, 13)), material);
     const SurfaceMesh& m = solver.mesh();
     Eigen::VectorXd q(3 * m.triangleCount());
-    for (int t = 0; t < m.triangleCount(); ++t) q.segment<3>(3 * t) = Eigen::Vector3d(1e6 * m.normal(t).x(), 0, 0);
+    for (int t = 0; t < m.triangleCount(); ++t)
+        q.segment<3>(3 * t) = Eigen::Vector3d(1e6 * m.normal(t).x(), 0, 0);
     std::printf("cube: %d surface triangles, BEM set-up %.2f s\n", m.triangleCount(), setup.seconds());
 
     const int steps = 40;
@@ -70,23 +71,25 @@ int main() {
                                          {"HYBRID(+100)", FractureMethod::Hybrid, m.triangleCount() + 100},
                                          {"HYBRID(+400)", FractureMethod::Hybrid, m.triangleCount() + 400}};
     std::map<std::string, std::vector<Sample>> results;
-    for (const auto& method : methods) results[method.name] = run(solver, q, material, method.method, method.threshold, steps);
+    for (const auto& method : methods)
+        results[method.name] = run(solver, q, material, method.method, method.threshold, steps);
 
     const auto& full = results["FULL"];
     for (const auto& method : methods) {
         const auto& r = results[method.name];
         double total = 0.0, err = 0.0;
-        std::printf("\n%s\n%5s %10s %6s %9s %13s %12s %10s\n", method.name.c_str(), "step", "crack_tris", "front",
-                    "step_s", "s_per_front", "mean_KI", "vs_FULL");
+        std::printf("\n%s\n%5s %10s %6s %9s %13s %12s %10s\n", method.name.c_str(), "step", "crack_tris",
+                    "front", "step_s", "s_per_front", "mean_KI", "vs_FULL");
         for (std::size_t i = 0; i < r.size(); ++i) {
             total += r[i].seconds;
             const double rel = i < full.size() ? r[i].meanKI / full[i].meanKI - 1.0 : NAN;
             if (i < full.size()) err = std::max(err, std::abs(rel));
-            std::printf("%5zu %10d %6d %9.4f %13.2e %12.4e %+9.1f%%\n", i, r[i].crackTriangles, r[i].frontNodes,
-                        r[i].seconds, r[i].seconds / std::max(1, r[i].frontNodes), r[i].meanKI, 100 * rel);
+            std::printf("%5zu %10d %6d %9.4f %13.2e %12.4e %+9.1f%%\n", i, r[i].crackTriangles,
+                        r[i].frontNodes, r[i].seconds, r[i].seconds / std::max(1, r[i].frontNodes),
+                        r[i].meanKI, 100 * rel);
         }
-        std::printf("%s: %zu steps, %.2f s in all, max |K_I / FULL - 1| = %.1f %%\n", method.name.c_str(), r.size(), total,
-                    100 * err);
+        std::printf("%s: %zu steps, %.2f s in all, max |K_I / FULL - 1| = %.1f %%\n", method.name.c_str(),
+                    r.size(), total, 100 * err);
     }
 
     // EST cost against crack size at constant front length: first step with >= N crack
@@ -101,12 +104,11 @@ int main() {
     const Sample* large = small ? firstWith(est, 10 * small->crackTriangles) : nullptr;
     if (small && large) {
         std::printf("METRIC est_step_growth %.2f ratio (%d -> %d crack triangles, front %d -> %d nodes)\n",
-                    large->seconds / small->seconds, small->crackTriangles, large->crackTriangles, small->frontNodes,
-                    large->frontNodes);
+                    large->seconds / small->seconds, small->crackTriangles, large->crackTriangles,
+                    small->frontNodes, large->frontNodes);
         std::printf("METRIC est_step_growth_per_front_node %.2f ratio\n",
                     (large->seconds / large->frontNodes) / (small->seconds / small->frontNodes));
-    }
-    else
+    } else
         std::printf("METRIC est_step_growth nan ratio (the crack did not grow tenfold)\n");
     const Sample* full80 = firstWith(full, 80);
     if (full80)

@@ -22,7 +22,8 @@ std::string mutate(std::string bytes, const std::string& other, std::mt19937_64&
     auto pick = [&](std::size_t n) { return n == 0 ? std::size_t(0) : std::size_t(rng() % n); };
     switch (rng() % 5) {
         case 0:  // flip bits of a few bytes
-            for (int k = 0; k < 1 + int(rng() % 4) && !bytes.empty(); ++k) bytes[pick(bytes.size())] ^= char(1 << (rng() % 8));
+            for (int k = 0; k < 1 + int(rng() % 4) && !bytes.empty(); ++k)
+                bytes[pick(bytes.size())] ^= char(1 << (rng() % 8));
             break;
         case 1:  // overwrite a byte with an interesting one
             if (!bytes.empty()) bytes[pick(bytes.size())] = "\0\n-9e.,;{}[]\"\xff"[rng() % 15];
@@ -35,13 +36,15 @@ std::string mutate(std::string bytes, const std::string& other, std::mt19937_64&
             break;
         case 3:  // duplicate a run
             if (!bytes.empty()) {
-                const std::size_t at = pick(bytes.size()), n = 1 + pick(std::min<std::size_t>(64, bytes.size() - at));
+                const std::size_t at = pick(bytes.size()),
+                                  n = 1 + pick(std::min<std::size_t>(64, bytes.size() - at));
                 bytes.insert(pick(bytes.size() + 1), bytes.substr(at, n));
             }
             break;
         default:  // splice a piece of another input
             if (!other.empty()) {
-                const std::size_t at = pick(other.size()), n = 1 + pick(std::min<std::size_t>(256, other.size() - at));
+                const std::size_t at = pick(other.size()),
+                                  n = 1 + pick(std::min<std::size_t>(256, other.size() - at));
                 bytes.insert(pick(bytes.size() + 1), other.substr(at, n));
             }
     }
@@ -77,7 +80,8 @@ int main(int argc, char** argv) {
     for (const fs::path& path : inputs) {
         std::ifstream in(path, std::ios::binary);
         contents.emplace_back((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(contents.back().data()), contents.back().size());
+        LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(contents.back().data()),
+                               contents.back().size());
     }
     std::printf("replayed %zu inputs\n", inputs.size());
     if (inputs.empty()) return 1;

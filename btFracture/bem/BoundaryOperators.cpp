@@ -34,24 +34,27 @@ AssemblyCache buildCache(const SurfaceMesh& mesh, const QuadratureSettings& q) {
     }
 #pragma omp parallel for schedule(dynamic, 16)
     for (int t = 0; t < m; ++t) {
-        for (int level = 0; level < 4; ++level) c.points[t][level] = PanelPoints(c.panels[t], c.degrees[level]);
+        for (int level = 0; level < 4; ++level)
+            c.points[t][level] = PanelPoints(c.panels[t], c.degrees[level]);
         std::vector<int> partners;
         for (int v : mesh.triangle(t))
             for (int other : mesh.trianglesAtNode(v))
                 if (other >= t) partners.push_back(other);
         std::sort(partners.begin(), partners.end());
         partners.erase(std::unique(partners.begin(), partners.end()), partners.end());
-        for (int other : partners) c.singular[t].emplace_back(other, integrateSingular(c.panels[t], c.panels[other], q));
+        for (int other : partners)
+            c.singular[t].emplace_back(other, integrateSingular(c.panels[t], c.panels[other], q));
     }
     return c;
 }
 
-PairIntegrals separatedPair(const SurfaceMesh& mesh, const AssemblyCache& c, const QuadratureSettings& q, int sigma,
-                            int tau) {
+PairIntegrals separatedPair(const SurfaceMesh& mesh, const AssemblyCache& c, const QuadratureSettings& q,
+                            int sigma, int tau) {
     const double eta = (mesh.centroid(sigma) - mesh.centroid(tau)).norm() /
                        std::max(mesh.diameter(sigma), mesh.diameter(tau));
     const int degree = separatedRuleDegree(eta, q);
-    const int level = static_cast<int>(std::find(c.degrees.begin(), c.degrees.end(), degree) - c.degrees.begin());
+    const int level =
+        static_cast<int>(std::find(c.degrees.begin(), c.degrees.end(), degree) - c.degrees.begin());
     return integrateSeparated(c.panels[sigma], c.points[sigma][level], c.panels[tau], c.points[tau][level]);
 }
 
@@ -95,7 +98,8 @@ void symmetriseInPlace(Eigen::MatrixXd& A) {
 
 Panel panelOf(const SurfaceMesh& mesh, int t) {
     const auto& tri = mesh.triangle(t);
-    return Panel{tri, {mesh.node(tri[0]), mesh.node(tri[1]), mesh.node(tri[2])}, mesh.normal(t), mesh.area(t)};
+    return Panel{
+        tri, {mesh.node(tri[0]), mesh.node(tri[1]), mesh.node(tri[2])}, mesh.normal(t), mesh.area(t)};
 }
 
 std::vector<std::vector<int>> colourTrianglesByNodes(const SurfaceMesh& mesh) {
@@ -174,8 +178,10 @@ BoundaryOperators assembleBoundaryOperators(const SurfaceMesh& mesh, const Elast
                 }
                 double forward[3][9], backward[3][9];  // curl-linear parts of the F blocks
                 for (int a = 0; a < 2; ++a) {
-                    addLoadBlock(c[a].data(), coeff, mu, 0.0, [&](int i, int j, double v) { forward[a][3 * i + j] = v; });
-                    addLoadBlock(d[a].data(), coeff, mu, 0.0, [&](int i, int j, double v) { backward[a][3 * i + j] = v; });
+                    addLoadBlock(c[a].data(), coeff, mu, 0.0,
+                                 [&](int i, int j, double v) { forward[a][3 * i + j] = v; });
+                    addLoadBlock(d[a].data(), coeff, mu, 0.0,
+                                 [&](int i, int j, double v) { backward[a][3 * i + j] = v; });
                 }
                 for (int e = 0; e < 9; ++e) {
                     forward[2][e] = -forward[0][e] - forward[1][e];
@@ -186,13 +192,16 @@ BoundaryOperators assembleBoundaryOperators(const SurfaceMesh& mesh, const Elast
                     for (int ib = 0; ib < 3; ++ib) {
                         const int col = 3 * partnerNodes[ib];
                         for (int i = 0; i < 3; ++i)
-                            for (int j = 0; j < 3; ++j) upperTransposed(col + j, row + i) += K[ia][ib][3 * i + j];
+                            for (int j = 0; j < 3; ++j)
+                                upperTransposed(col + j, row + i) += K[ia][ib][3 * i + j];
                     }
                     // Test hat phi_p on sigma, traction on tau (x on tau, density on sigma).
-                    const double scalar = -pi.doubleLayerYX[ia] + (tau == sigma ? mesh.area(sigma) / 6.0 : 0.0);
+                    const double scalar =
+                        -pi.doubleLayerYX[ia] + (tau == sigma ? mesh.area(sigma) / 6.0 : 0.0);
                     for (int i = 0; i < 3; ++i)
                         for (int j = 0; j < 3; ++j)
-                            ops.tractionToLoad(row + i, 3 * tau + j) += forward[ia][3 * i + j] + (i == j ? scalar : 0.0);
+                            ops.tractionToLoad(row + i, 3 * tau + j) +=
+                                forward[ia][3 * i + j] + (i == j ? scalar : 0.0);
                 }
                 if (tau == sigma) continue;
                 for (int ib = 0; ib < 3; ++ib) {
@@ -201,7 +210,8 @@ BoundaryOperators assembleBoundaryOperators(const SurfaceMesh& mesh, const Elast
                     const double scalar = -pi.doubleLayerXY[ib];
                     for (int i = 0; i < 3; ++i)
                         for (int j = 0; j < 3; ++j)
-                            reverse(3 * sigma + j, col + i) += backward[ib][3 * i + j] + (i == j ? scalar : 0.0);
+                            reverse(3 * sigma + j, col + i) +=
+                                backward[ib][3 * i + j] + (i == j ? scalar : 0.0);
                 }
             }
         }

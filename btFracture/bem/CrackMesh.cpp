@@ -21,7 +21,8 @@ int CrackMesh::addNode(const Eigen::Vector3d& position) {
 
 int CrackMesh::addTriangle(int a, int b, int c) {
     for (int v : {a, b, c})
-        if (v < 0 || v >= nodeCount()) throw Error("CrackMesh: triangle corner " + std::to_string(v) + " out of range");
+        if (v < 0 || v >= nodeCount())
+            throw Error("CrackMesh: triangle corner " + std::to_string(v) + " out of range");
     if (a == b || b == c || a == c) throw Error("CrackMesh: triangle with a repeated corner");
     triangles_.push_back({a, b, c});
     const int t = triangleCount() - 1;
@@ -40,7 +41,9 @@ Eigen::Vector3d CrackMesh::normal(int t) const {
     return (nodes_[tri[1]] - nodes_[tri[0]]).cross(nodes_[tri[2]] - nodes_[tri[0]]).normalized();
 }
 
-double CrackMesh::sheetArea(int t) const { return sheetAreas_[sheetOfTriangle_[t]]; }
+double CrackMesh::sheetArea(int t) const {
+    return sheetAreas_[sheetOfTriangle_[t]];
+}
 
 CrackMesh CrackMesh::extractSheets(const std::vector<int>& sheets, const Eigen::Vector3d& shift) const {
     CrackMesh out;
@@ -96,14 +99,16 @@ std::vector<int> CrackMesh::refreshUnknowns() {
         if (uses.size() > 2 || (uses.size() == 2 && uses[0].second == uses[1].second)) {
             std::ostringstream msg;
             msg << "CrackMesh: edge " << edge.first << "-" << edge.second
-                << (uses.size() > 2 ? " is shared by more than two crack triangles" : " is inconsistently oriented");
+                << (uses.size() > 2 ? " is shared by more than two crack triangles"
+                                    : " is inconsistently oriented");
             throw Error(msg.str());
         }
         if (uses.size() == 1) {
             onFront[edge.first] = onFront[edge.second] = 1;
             const int t = uses[0].first;
             const bool forward = uses[0].second;
-            frontEdges_.push_back({forward ? edge.first : edge.second, forward ? edge.second : edge.first, t});
+            frontEdges_.push_back(
+                {forward ? edge.first : edge.second, forward ? edge.second : edge.first, t});
         } else {
             parent[find(uses[0].first)] = find(uses[1].first);
         }
@@ -121,7 +126,8 @@ std::vector<int> CrackMesh::refreshUnknowns() {
     std::vector<int> activated;
     for (int i = 0; i < nodeCount(); ++i) {
         if (onFront[i] && unknown_[i] >= 0)
-            throw Error("CrackMesh: node " + std::to_string(i) + " returned to the front; sheets may only grow");
+            throw Error("CrackMesh: node " + std::to_string(i) +
+                        " returned to the front; sheets may only grow");
         if (!onFront[i] && unknown_[i] < 0 && !nodeTriangles_[i].empty()) {
             unknown_[i] = unknownCount_++;
             nodeOfUnknown_.push_back(i);

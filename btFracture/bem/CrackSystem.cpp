@@ -47,7 +47,8 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
             const Panel surface = panelOf(mesh, sigma);
             for (int kappa : support) {
                 const Panel crack = cracks.panel(kappa, n);
-                const PairIntegrals pi = integratePair(surface, crack, q);  // x on the surface, y on the crack
+                const PairIntegrals pi =
+                    integratePair(surface, crack, q);  // x on the surface, y on the crack
                 const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
                 for (int b = 0; b < 3; ++b) {
                     const int k = cracks.unknownOf(cracks.triangle(kappa)[b]);
@@ -133,8 +134,8 @@ int CrackSystem::update() {
     for (int kappa = 0; kappa < cracks_.triangleCount(); ++kappa)
         for (int lambda = kappa; lambda < cracks_.triangleCount(); ++lambda) {
             if (!inSupport[kappa] && !inSupport[lambda]) continue;
-            const PairIntegrals pi =
-                integratePair(cracks_.panel(kappa, offset), cracks_.panel(lambda, offset), solver_.settings().quadrature);
+            const PairIntegrals pi = integratePair(
+                cracks_.panel(kappa, offset), cracks_.panel(lambda, offset), solver_.settings().quadrature);
             const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
             addBlock(kappa, lambda, coeff, false);
             if (lambda != kappa) addBlock(kappa, lambda, coeff, true);
@@ -157,8 +158,8 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {
     s.openings = lu.solve(rhs);
     const double residual = (schur * s.openings - rhs).norm() / std::max(rhs.norm(), 1e-300);
     if (!s.openings.allFinite() || residual > 1e-8)
-        throw Error("crack system: Schur complement solve failed (relative residual " + std::to_string(residual) +
-                    "); the crack mesh is probably degenerate");
+        throw Error("crack system: Schur complement solve failed (relative residual " +
+                    std::to_string(residual) + "); the crack mesh is probably degenerate");
     s.displacements = b - H_ * s.openings;
     return s;
 }
@@ -181,7 +182,8 @@ CrackSystem::Solution CrackSystem::solveMonolithic(const Eigen::VectorXd& q) con
 
 Eigen::VectorXd CrackSystem::nodalOpenings(const Solution& s) const {
     Eigen::VectorXd out = Eigen::VectorXd::Zero(3 * cracks_.nodeCount());
-    for (int k = 0; k < assembledUnknowns_; ++k) out.segment<3>(3 * cracks_.nodeOfUnknown()[k]) = s.openings.segment<3>(3 * k);
+    for (int k = 0; k < assembledUnknowns_; ++k)
+        out.segment<3>(3 * cracks_.nodeOfUnknown()[k]) = s.openings.segment<3>(3 * k);
     return out;
 }
 

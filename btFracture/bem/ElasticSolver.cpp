@@ -35,7 +35,8 @@ void lowerGram(const Eigen::MatrixXd& K, Eigen::MatrixXd& out) {
 
 }  // namespace
 
-ElasticSolver::ElasticSolver(SurfaceMesh mesh, const Material& material, const ElasticSolverSettings& settings)
+ElasticSolver::ElasticSolver(SurfaceMesh mesh, const Material& material,
+                             const ElasticSolverSettings& settings)
     : mesh_(std::move(mesh)), material_(material), settings_(settings) {
     Timer timer;
     operators_ = assembleBoundaryOperators(mesh_, {material.shearModulus(), material.poissonRatio()},
@@ -70,8 +71,8 @@ ElasticSolver::ElasticSolver(SurfaceMesh mesh, const Material& material, const E
         throw Error(msg.str());
     }
     if (rcond_ < 1e-12)
-        logf(LogLevel::Warning, "BEM system of ", mesh_.triangleCount(), " triangles is ill-conditioned (rcond ",
-             rcond_, "); results may be inaccurate");
+        logf(LogLevel::Warning, "BEM system of ", mesh_.triangleCount(),
+             " triangles is ill-conditioned (rcond ", rcond_, "); results may be inaccurate");
 }
 
 TractionResultant ElasticSolver::netLoad(const Eigen::VectorXd& q) const {
@@ -79,7 +80,8 @@ TractionResultant ElasticSolver::netLoad(const Eigen::VectorXd& q) const {
     TractionResultant net{load.head<3>(), load.tail<3>(), 0.0};
     double magnitude = 0.0;
     for (int t = 0; t < mesh_.triangleCount(); ++t) magnitude += mesh_.area(t) * q.segment<3>(3 * t).norm();
-    if (magnitude > 0.0) net.relative = std::max(net.force.norm(), net.torque.norm() / mesh_.radius()) / magnitude;
+    if (magnitude > 0.0)
+        net.relative = std::max(net.force.norm(), net.torque.norm() / mesh_.radius()) / magnitude;
     return net;
 }
 
@@ -92,8 +94,8 @@ Eigen::MatrixXd ElasticSolver::solveRegularised(const Eigen::MatrixXd& rhs) cons
 Eigen::VectorXd ElasticSolver::displacements(const Eigen::VectorXd& q) const {
     if (q.size() != 3 * mesh_.triangleCount()) {
         std::ostringstream msg;
-        msg << "ElasticSolver::displacements: expected " << 3 * mesh_.triangleCount() << " traction values, got "
-            << q.size();
+        msg << "ElasticSolver::displacements: expected " << 3 * mesh_.triangleCount()
+            << " traction values, got " << q.size();
         throw Error(msg.str());
     }
     if (!q.allFinite()) throw Error("ElasticSolver::displacements: tractions contain NaN or Inf");
@@ -117,7 +119,8 @@ Eigen::VectorXd ElasticSolver::displacementsFromLoad(const Eigen::VectorXd& f) c
     const double relative = residual.norm() / std::max(rhs.norm(), std::numeric_limits<double>::min());
     if (!u.allFinite() || relative > 1e-6) {
         std::ostringstream msg;
-        msg << "BEM solve failed: relative residual " << relative << " (reciprocal condition " << rcond_ << ")";
+        msg << "BEM solve failed: relative residual " << relative << " (reciprocal condition " << rcond_
+            << ")";
         throw Error(msg.str());
     }
     return u;

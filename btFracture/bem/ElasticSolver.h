@@ -66,9 +66,9 @@ private:
     Material material_;
     ElasticSolverSettings settings_;
     BoundaryOperators operators_;
-    Eigen::MatrixXd rigidModes_;     // T (6 x 3n)
+    Eigen::MatrixXd rigidModes_;       // T (6 x 3n)
     Eigen::MatrixXd netLoadOperator_;  // A (6 x 3m)
-    Eigen::MatrixXd factor_;         // lower Cholesky factor of K_R
+    Eigen::MatrixXd factor_;           // lower Cholesky factor of K_R
     double gamma_ = 0.0;
     double rcond_ = 0.0;
     ElasticSolverTimings timings_;

@@ -31,17 +31,20 @@ inline PairCoefficients coefficientsOf(const PairIntegrals& pi, double mu, doubl
     const double diag = lameScale * (3.0 - 4.0 * nu) * pi.inverseDistance;
     return {pi.inverseDistance / (4.0 * M_PI),
             {lameScale * pi.dyadic(0, 0) + diag, lameScale * pi.dyadic(0, 1), lameScale * pi.dyadic(0, 2),
-             lameScale * pi.dyadic(1, 1) + diag, lameScale * pi.dyadic(1, 2), lameScale * pi.dyadic(2, 2) + diag}};
+             lameScale * pi.dyadic(1, 1) + diag, lameScale * pi.dyadic(1, 2),
+             lameScale * pi.dyadic(2, 2) + diag}};
 }
 
 // K block of test hat with curl c against trial hat with curl d, scaled, added to out(i, j):
 //   mu a [4 (c.d) Id - 2 d c^T - c d^T] + [c] L [d]     (P = L [d], column-major)
 template <class Out>
-inline void addStiffnessBlock(const double* c, const double* d, const double* P, double muA, double scale, Out&& out) {
+inline void addStiffnessBlock(const double* c, const double* d, const double* P, double muA, double scale,
+                              Out&& out) {
     const double g4 = 4.0 * muA * (c[0] * d[0] + c[1] * d[1] + c[2] * d[2]);
     for (int j = 0; j < 3; ++j) {
         const double* pj = P + 3 * j;
-        const double cross[3] = {c[1] * pj[2] - c[2] * pj[1], c[2] * pj[0] - c[0] * pj[2], c[0] * pj[1] - c[1] * pj[0]};
+        const double cross[3] = {c[1] * pj[2] - c[2] * pj[1], c[2] * pj[0] - c[0] * pj[2],
+                                 c[0] * pj[1] - c[1] * pj[0]};
         for (int i = 0; i < 3; ++i) {
             double v = cross[i] - muA * (2.0 * d[i] * c[j] + c[i] * d[j]);
             if (i == j) v += g4;
@@ -58,7 +61,8 @@ inline void addLoadBlock(const double* c, const PairCoefficients& k, double mu, 
     symTimesCross(k.L, c, Q);
     const double cross[3][3] = {{0, -c[2], c[1]}, {c[2], 0, -c[0]}, {-c[1], c[0], 0}};
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) out(i, j, -Q[3 * i + j] * (0.5 / mu) - k.a * cross[i][j] + (i == j ? scalar : 0.0));
+        for (int j = 0; j < 3; ++j)
+            out(i, j, -Q[3 * i + j] * (0.5 / mu) - k.a * cross[i][j] + (i == j ? scalar : 0.0));
 }
 
 }  // namespace btfracture

@@ -30,9 +30,10 @@ void addSomiglianaStress(const Eigen::Vector3d& x, const Eigen::Vector3d& y, con
             // sum_k S1_ijk q_k
             const double s1 = a * (q[j] * g[i] + q[i] * g[j] - dij * gq) + 3.0 * g[i] * g[j] * gq;
             // sum_k S2_ijk u_k
-            const double s2 = 3.0 * dn * (a * dij * gu + nu * (u[j] * g[i] + u[i] * g[j]) - 5.0 * g[i] * g[j] * gu) +
-                              3.0 * nu * (n[i] * g[j] + n[j] * g[i]) * gu +
-                              a * (3.0 * nu_u * g[i] * g[j] + n[j] * u[i] + n[i] * u[j]) - (1.0 - 4.0 * nu) * nu_u * dij;
+            const double s2 =
+                3.0 * dn * (a * dij * gu + nu * (u[j] * g[i] + u[i] * g[j]) - 5.0 * g[i] * g[j] * gu) +
+                3.0 * nu * (n[i] * g[j] + n[j] * g[i]) * gu +
+                a * (3.0 * nu_u * g[i] * g[j] + n[j] * u[i] + n[i] * u[j]) - (1.0 - 4.0 * nu) * nu_u * dij;
             sigma(i, j) += c1 * s1 - c2 * s2;
         }
 }
@@ -44,8 +45,8 @@ struct SubTriangle {
 };
 
 void integrateAdaptive(const Eigen::Vector3d& x, const SubTriangle& s, const Eigen::Vector3d& n,
-                       const Eigen::Vector3d& q, double E, double nu, const StressEvaluationSettings& settings,
-                       int depth, Eigen::Matrix3d& sigma) {
+                       const Eigen::Vector3d& q, double E, double nu,
+                       const StressEvaluationSettings& settings, int depth, Eigen::Matrix3d& sigma) {
     const Eigen::Vector3d closest = closestPointOnTriangle(x, s.corner[0], s.corner[1], s.corner[2]);
     const double size = std::max({(s.corner[1] - s.corner[0]).norm(), (s.corner[2] - s.corner[1]).norm(),
                                   (s.corner[0] - s.corner[2]).norm()});
@@ -60,7 +61,8 @@ void integrateAdaptive(const Eigen::Vector3d& x, const SubTriangle& s, const Eig
                                          {{m[0], s.corner[1], m[1]}, {um[0], s.u[1], um[1]}, quarter},
                                          {{m[2], m[1], s.corner[2]}, {um[2], um[1], s.u[2]}, quarter},
                                          {{m[1], m[2], m[0]}, {um[1], um[2], um[0]}, quarter}};
-        for (const auto& child : children) integrateAdaptive(x, child, n, q, E, nu, settings, depth + 1, sigma);
+        for (const auto& child : children)
+            integrateAdaptive(x, child, n, q, E, nu, settings, depth + 1, sigma);
         return;
     }
     for (const auto& p : triangleRule(settings.ruleDegree).points) {
@@ -74,7 +76,13 @@ void integrateAdaptive(const Eigen::Vector3d& x, const SubTriangle& s, const Eig
 
 StressEvaluator::StressEvaluator(const SurfaceMesh& mesh, double E, double nu, const Eigen::VectorXd& u,
                                  const Eigen::VectorXd& q, const StressEvaluationSettings& settings)
-    : mesh_(mesh), E_(E), nu_(nu), u_(u), q_(q), settings_(settings), surface_(surfaceStresses(mesh, E, nu, u, q)) {}
+    : mesh_(mesh),
+      E_(E),
+      nu_(nu),
+      u_(u),
+      q_(q),
+      settings_(settings),
+      surface_(surfaceStresses(mesh, E, nu, u, q)) {}
 
 void StressEvaluator::addCracks(const CrackMesh& cracks, const Eigen::VectorXd& nodalOpenings) {
     cracks_ = &cracks;
@@ -85,7 +93,8 @@ StressEvaluator::Nearest StressEvaluator::nearestTriangle(const Eigen::Vector3d&
     Nearest best{-1, std::numeric_limits<double>::infinity(), x};
     for (int t = 0; t < mesh_.triangleCount(); ++t) {
         const auto& tri = mesh_.triangle(t);
-        const Eigen::Vector3d c = closestPointOnTriangle(x, mesh_.node(tri[0]), mesh_.node(tri[1]), mesh_.node(tri[2]));
+        const Eigen::Vector3d c =
+            closestPointOnTriangle(x, mesh_.node(tri[0]), mesh_.node(tri[1]), mesh_.node(tri[2]));
         const double d = (c - x).norm();
         if (d < best.distance) best = {t, d, c};
     }
@@ -105,10 +114,12 @@ Eigen::Matrix3d StressEvaluator::interiorStress(const Eigen::Vector3d& x) const 
         for (int t = 0; t < cracks_->triangleCount(); ++t) {
             const auto& tri = cracks_->triangle(t);
             const Eigen::VectorXd& cod = *openings_;
-            SubTriangle s{{cracks_->node(tri[0]), cracks_->node(tri[1]), cracks_->node(tri[2])},
-                          {cod.segment<3>(3 * tri[0]), cod.segment<3>(3 * tri[1]), cod.segment<3>(3 * tri[2])},
-                          cracks_->area(t)};
-            integrateAdaptive(x, s, -cracks_->normal(t), Eigen::Vector3d::Zero(), E_, nu_, settings_, 0, sigma);
+            SubTriangle s{
+                {cracks_->node(tri[0]), cracks_->node(tri[1]), cracks_->node(tri[2])},
+                {cod.segment<3>(3 * tri[0]), cod.segment<3>(3 * tri[1]), cod.segment<3>(3 * tri[2])},
+                cracks_->area(t)};
+            integrateAdaptive(x, s, -cracks_->normal(t), Eigen::Vector3d::Zero(), E_, nu_, settings_, 0,
+                              sigma);
         }
     sigma.triangularView<Eigen::StrictlyLower>() = sigma.transpose().triangularView<Eigen::StrictlyLower>();
     return sigma;
@@ -121,7 +132,8 @@ Eigen::Matrix3d StressEvaluator::nearestSurfaceStress(const Eigen::Vector3d& x) 
 Eigen::Matrix3d StressEvaluator::stressAt(const Eigen::Vector3d& x) const {
     const Nearest near = nearestTriangle(x);
     const double h = mesh_.diameter(near.triangle);
-    const double s = (near.distance / h - settings_.nearFraction) / (settings_.farFraction - settings_.nearFraction);
+    const double s =
+        (near.distance / h - settings_.nearFraction) / (settings_.farFraction - settings_.nearFraction);
     if (s <= 0.0) return surface_[near.triangle];
     const Eigen::Matrix3d interior = interiorStress(x);
     if (s >= 1.0) return interior;

@@ -68,7 +68,10 @@ bool coplanar(const Panel& x, const Panel& y) {
 }  // namespace
 
 int separatedRuleDegree(double eta, const QuadratureSettings& s) {
-    return eta < s.nearRatio ? s.nearDegree : eta < s.midRatio ? s.midDegree : eta < s.farRatio ? s.farDegree : s.veryFarDegree;
+    return eta < s.nearRatio  ? s.nearDegree
+           : eta < s.midRatio ? s.midDegree
+           : eta < s.farRatio ? s.farDegree
+                              : s.veryFarDegree;
 }
 
 PanelPoints::PanelPoints(const Panel& panel, int degree) {
@@ -85,7 +88,8 @@ PanelPoints::PanelPoints(const Panel& panel, int degree) {
     }
 }
 
-PairIntegrals integrateSeparated(const Panel& x, const PanelPoints& px, const Panel& y, const PanelPoints& py) {
+PairIntegrals integrateSeparated(const Panel& x, const PanelPoints& px, const Panel& y,
+                                 const PanelPoints& py) {
     Accumulator acc{x.normal, y.normal, true, {}};
     for (int i = 0; i < px.count; ++i) {
         const double* a = &px.data[PanelPoints::kStride * i];
@@ -115,7 +119,8 @@ void alignShared(const Panel& x, const Panel& y, std::array<int, 3>& permX, std:
         for (int k = 0; k < nShared; ++k) perm[k] = shared[k];
         int next = nShared;
         for (int i = 0; i < 3; ++i)
-            if (std::find(perm.begin(), perm.begin() + nShared, i) == perm.begin() + nShared) perm[next++] = i;
+            if (std::find(perm.begin(), perm.begin() + nShared, i) == perm.begin() + nShared)
+                perm[next++] = i;
     };
     complete(permX, sharedX, nShared);
     complete(permY, sharedY, nShared);
@@ -154,10 +159,14 @@ PairRelation relationOf(const Panel& x, const Panel& y) {
     for (int i : x.ids)
         for (int j : y.ids) shared += (i == j);
     switch (shared) {
-        case 0: return PairRelation::Separated;
-        case 1: return PairRelation::CommonVertex;
-        case 2: return PairRelation::CommonEdge;
-        default: return PairRelation::Identical;
+        case 0:
+            return PairRelation::Separated;
+        case 1:
+            return PairRelation::CommonVertex;
+        case 2:
+            return PairRelation::CommonEdge;
+        default:
+            return PairRelation::Identical;
     }
 }
 
@@ -177,7 +186,8 @@ PairIntegrals integratePair(const Panel& x, const Panel& y, const QuadratureSett
     if (relationOf(x, y) != PairRelation::Separated) return integrateSingular(x, y, settings);
     const Eigen::Vector3d cx = (x.corners[0] + x.corners[1] + x.corners[2]) / 3.0;
     const Eigen::Vector3d cy = (y.corners[0] + y.corners[1] + y.corners[2]) / 3.0;
-    const int degree = separatedRuleDegree((cx - cy).norm() / std::max(diameterOf(x), diameterOf(y)), settings);
+    const int degree =
+        separatedRuleDegree((cx - cy).norm() / std::max(diameterOf(x), diameterOf(y)), settings);
     return integrateSeparated(x, PanelPoints(x, degree), y, PanelPoints(y, degree));
 }
 

@@ -22,8 +22,8 @@ struct Panel {
 };
 
 struct PairIntegrals {
-    double inverseDistance = 0.0;                        // int_x int_y 1/r
-    Eigen::Matrix3d dyadic = Eigen::Matrix3d::Zero();    // int_x int_y r r^T / r^3, r = x - y
+    double inverseDistance = 0.0;                      // int_x int_y 1/r
+    Eigen::Matrix3d dyadic = Eigen::Matrix3d::Zero();  // int_x int_y r r^T / r^3, r = x - y
     // Laplace double layer with P1 density on the other panel:
     // doubleLayerXY[b] = int_x int_y (x - y).n_y / (4 pi r^3) phi_b(y), b = corner of panel y
     // doubleLayerYX[a] = int_y int_x (y - x).n_x / (4 pi r^3) phi_a(x), a = corner of panel x
@@ -38,9 +38,9 @@ struct QuadratureSettings {
     int edgePoints = 5;
     int vertexPoints = 5;
     // Regular pairs: rule degree per triangle chosen by distance / size ratio eta.
-    double nearRatio = 1.5;   // eta below this: `nearDegree`
-    double midRatio = 3.0;    // below this: `midDegree`
-    double farRatio = 6.0;    // below this: `farDegree`, beyond: `veryFarDegree`
+    double nearRatio = 1.5;  // eta below this: `nearDegree`
+    double midRatio = 3.0;   // below this: `midDegree`
+    double farRatio = 6.0;   // below this: `farDegree`, beyond: `veryFarDegree`
     int nearDegree = 8;
     int midDegree = 5;
     int farDegree = 4;
@@ -64,7 +64,8 @@ struct PanelPoints {
 };
 
 // Separated pair with precomputed points (both at the degree separatedRuleDegree gives).
-PairIntegrals integrateSeparated(const Panel& x, const PanelPoints& px, const Panel& y, const PanelPoints& py);
+PairIntegrals integrateSeparated(const Panel& x, const PanelPoints& px, const Panel& y,
+                                 const PanelPoints& py);
 // Identical, edge- or vertex-adjacent pair by Sauter-Schwab quadrature.
 PairIntegrals integrateSingular(const Panel& x, const Panel& y, const QuadratureSettings& settings);
 

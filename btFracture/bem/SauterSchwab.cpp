@@ -27,15 +27,17 @@ SauterSchwabRule tabulate(PairRelation relation, int n, bool swapSymmetric) {
 
 const SauterSchwabRule& sauterSchwabRule(PairRelation relation, int n, bool swapSymmetric) {
     if (n < 1 || n > kMaxPoints || relation == PairRelation::Separated)
-        throw Error("Sauter-Schwab rule with " + std::to_string(n) + " points per axis requested; supported: 1.." +
-                    std::to_string(kMaxPoints) + " for singular pairs");
+        throw Error("Sauter-Schwab rule with " + std::to_string(n) +
+                    " points per axis requested; supported: 1.." + std::to_string(kMaxPoints) +
+                    " for singular pairs");
     // [relation][swapSymmetric][n]
     static const auto tables = [] {
         std::array<std::array<std::array<SauterSchwabRule, kMaxPoints + 1>, 2>, 3> all;
         for (int r = 0; r < 3; ++r)
             for (int k = 1; k <= kMaxPoints; ++k) {
                 all[r][0][k] = tabulate(static_cast<PairRelation>(r), k, false);
-                if (r == static_cast<int>(PairRelation::Identical)) all[r][1][k] = tabulate(PairRelation::Identical, k, true);
+                if (r == static_cast<int>(PairRelation::Identical))
+                    all[r][1][k] = tabulate(PairRelation::Identical, k, true);
             }
         return all;
     }();

@@ -57,7 +57,8 @@ void forEachSauterSchwabPoint(PairRelation relation, int n, Visit&& visit) {
                             visit(xi * e2, xi * e2 * e3, xi, xi * e1, wj);
                             break;
                         }
-                        case PairRelation::Separated: break;
+                        case PairRelation::Separated:
+                            break;
                     }
                 }
 }

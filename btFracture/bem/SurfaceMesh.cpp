@@ -25,7 +25,8 @@ SurfaceMesh::SurfaceMesh(TriangleMesh mesh) {
                 nodes_.push_back(mesh.vertices[v] - offset_);
             }
     triangles_.reserve(mesh.triangles.size());
-    for (const auto& tri : mesh.triangles) triangles_.push_back({newIndex[tri[0]], newIndex[tri[1]], newIndex[tri[2]]});
+    for (const auto& tri : mesh.triangles)
+        triangles_.push_back({newIndex[tri[0]], newIndex[tri[1]], newIndex[tri[2]]});
 
     const int m = triangleCount();
     areas_.resize(m);
@@ -67,7 +68,8 @@ SurfaceMesh::SurfaceMesh(TriangleMesh mesh) {
                 edgeNeighbours_[t][k] = other;
                 for (int j = 0; j < 3; ++j) {
                     const int c = triangles_[other][j], d = triangles_[other][(j + 1) % 3];
-                    if (std::min(c, d) == std::min(a, b) && std::max(c, d) == std::max(a, b)) edgeNeighbours_[other][j] = t;
+                    if (std::min(c, d) == std::min(a, b) && std::max(c, d) == std::max(a, b))
+                        edgeNeighbours_[other][j] = t;
                 }
             }
         }

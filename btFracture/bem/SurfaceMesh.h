@@ -25,9 +25,9 @@ public:
     const std::vector<std::array<int, 3>>& triangles() const { return triangles_; }
 
     double area(int t) const { return areas_[t]; }
-    const Eigen::Vector3d& normal(int t) const { return normals_[t]; }      // outward unit normal
+    const Eigen::Vector3d& normal(int t) const { return normals_[t]; }  // outward unit normal
     const Eigen::Vector3d& centroid(int t) const { return centroids_[t]; }
-    double diameter(int t) const { return diameters_[t]; }                  // longest edge
+    double diameter(int t) const { return diameters_[t]; }  // longest edge
     // Surface gradient of the P1 hat function of local corner k on triangle t (constant there).
     const Eigen::Vector3d& hatGradient(int t, int k) const { return hatGradients_[t][k]; }
     // Surface curl n x grad(phi) of that hat function (appendix Eq. 8 after integration by parts).

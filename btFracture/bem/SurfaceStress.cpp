@@ -33,10 +33,11 @@ Eigen::Matrix3d surfaceStress(const SurfaceMesh& mesh, double E, double nu, int 
     return q * n1.transpose() + q2 * n2.transpose() + q3 * n3.transpose();
 }
 
-std::vector<Eigen::Matrix3d> surfaceStresses(const SurfaceMesh& mesh, double E, double nu, const Eigen::VectorXd& u,
-                                             const Eigen::VectorXd& q) {
+std::vector<Eigen::Matrix3d> surfaceStresses(const SurfaceMesh& mesh, double E, double nu,
+                                             const Eigen::VectorXd& u, const Eigen::VectorXd& q) {
     std::vector<Eigen::Matrix3d> out(mesh.triangleCount());
-    for (int t = 0; t < mesh.triangleCount(); ++t) out[t] = surfaceStress(mesh, E, nu, t, u, q.segment<3>(3 * t));
+    for (int t = 0; t < mesh.triangleCount(); ++t)
+        out[t] = surfaceStress(mesh, E, nu, t, u, q.segment<3>(3 * t));
     return out;
 }
 

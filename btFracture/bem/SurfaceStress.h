@@ -12,11 +12,13 @@ namespace btfracture {
 
 // Stress [Pa] on `triangle` from nodal displacements u (3n, [m]) and its traction q [Pa].
 // E [Pa], nu [-]. Symmetric, and sigma n = q exactly.
-Eigen::Matrix3d surfaceStress(const SurfaceMesh& mesh, double youngsModulus, double poissonRatio, int triangle,
-                              const Eigen::VectorXd& displacements, const Eigen::Vector3d& traction);
+Eigen::Matrix3d surfaceStress(const SurfaceMesh& mesh, double youngsModulus, double poissonRatio,
+                              int triangle, const Eigen::VectorXd& displacements,
+                              const Eigen::Vector3d& traction);
 
 // All triangles; tractions are P0, 3m values.
-std::vector<Eigen::Matrix3d> surfaceStresses(const SurfaceMesh& mesh, double youngsModulus, double poissonRatio,
-                                             const Eigen::VectorXd& displacements, const Eigen::VectorXd& tractions);
+std::vector<Eigen::Matrix3d> surfaceStresses(const SurfaceMesh& mesh, double youngsModulus,
+                                             double poissonRatio, const Eigen::VectorXd& displacements,
+                                             const Eigen::VectorXd& tractions);
 
 }  // namespace btfracture

@@ -9,9 +9,12 @@ namespace btfracture {
 
 const char* toString(FractureMethod method) {
     switch (method) {
-        case FractureMethod::Full: return "full";
-        case FractureMethod::Estimated: return "est";
-        case FractureMethod::Hybrid: return "hybrid";
+        case FractureMethod::Full:
+            return "full";
+        case FractureMethod::Estimated:
+            return "est";
+        case FractureMethod::Hybrid:
+            return "hybrid";
     }
     return "?";
 }
@@ -33,12 +36,15 @@ void FractureSettings::validate() const {
     if (maxNewCracksPerEvent < 0) fail("maxNewCracksPerEvent", maxNewCracksPerEvent, ">= 0");
     if (maxStepsPerEvent < 0) fail("maxStepsPerEvent", maxStepsPerEvent, ">= 0");
     if (!(seedRadius > 0.0 && seedRadius <= 2.0)) fail("seedRadius", seedRadius, "in (0, 2]");
-    if (!(frontEdgeLength > 0.05 && frontEdgeLength <= 4.0)) fail("frontEdgeLength", frontEdgeLength, "in (0.05, 4]");
+    if (!(frontEdgeLength > 0.05 && frontEdgeLength <= 4.0))
+        fail("frontEdgeLength", frontEdgeLength, "in (0.05, 4]");
     if (!(minimumSpeed > 0.0 && minimumSpeed <= 1.0)) fail("minimumSpeed", minimumSpeed, "in (0, 1]");
     if (!(estimatorGeometryFactor > 0.0 && std::isfinite(estimatorGeometryFactor)))
         fail("estimatorGeometryFactor", estimatorGeometryFactor, "positive");
-    if (!(noise.amplitude >= 0.0 && noise.amplitude < 1.0)) fail("noise.amplitude", noise.amplitude, "in [0, 1)");
-    if (!(noise.wavelength > 0.0 && std::isfinite(noise.wavelength))) fail("noise.wavelength", noise.wavelength, "positive");
+    if (!(noise.amplitude >= 0.0 && noise.amplitude < 1.0))
+        fail("noise.amplitude", noise.amplitude, "in [0, 1)");
+    if (!(noise.wavelength > 0.0 && std::isfinite(noise.wavelength)))
+        fail("noise.wavelength", noise.wavelength, "positive");
 }
 
 }  // namespace btfracture

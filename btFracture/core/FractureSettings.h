@@ -39,7 +39,7 @@ struct FractureSettings {
     // an embedded crack, whose factor is 2/pi (penny crack). Measured against FULL on a growing
     // mode-I crack: 2/pi tracks within 5 %, 1.1215 overestimates 1.7-3x (tests/crack).
     double estimatorGeometryFactor = 2.0 / M_PI;
-    bool estimatorUpdate = true;        // the right-hand-side update of §4.3
+    bool estimatorUpdate = true;  // the right-hand-side update of §4.3
     MaterialNoise noise;
     // Validates ranges; throws btfracture::Error naming the field and value.
     void validate() const;

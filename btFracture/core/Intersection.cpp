@@ -6,8 +6,8 @@
 
 namespace btfracture {
 
-double windingNumber(const std::vector<Eigen::Vector3d>& vertices, const std::vector<std::array<int, 3>>& triangles,
-                     const Eigen::Vector3d& p) {
+double windingNumber(const std::vector<Eigen::Vector3d>& vertices,
+                     const std::vector<std::array<int, 3>>& triangles, const Eigen::Vector3d& p) {
     double sum = 0.0;
     for (const auto& t : triangles) {
         const Eigen::Vector3d a = vertices[t[0]] - p, b = vertices[t[1]] - p, c = vertices[t[2]] - p;

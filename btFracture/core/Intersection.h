@@ -9,8 +9,8 @@ namespace btfracture {
 
 // Generalised winding number of a closed, outward-oriented triangle surface at p (van Oosterom
 // & Strackee solid angles): about 1 inside, 0 outside.
-double windingNumber(const std::vector<Eigen::Vector3d>& vertices, const std::vector<std::array<int, 3>>& triangles,
-                     const Eigen::Vector3d& p);
+double windingNumber(const std::vector<Eigen::Vector3d>& vertices,
+                     const std::vector<std::array<int, 3>>& triangles, const Eigen::Vector3d& p);
 
 // Parameter t in [0, 1] where the segment p + t (q - p) crosses triangle (a, b, c), or a
 // negative value if it misses (Moller & Trumbore).

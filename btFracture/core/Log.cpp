@@ -13,10 +13,14 @@ std::atomic<int> minimumLevel{static_cast<int>(LogLevel::Info)};
 
 const char* levelName(LogLevel level) {
     switch (level) {
-        case LogLevel::Debug: return "debug";
-        case LogLevel::Info: return "info";
-        case LogLevel::Warning: return "warning";
-        case LogLevel::Error: return "error";
+        case LogLevel::Debug:
+            return "debug";
+        case LogLevel::Info:
+            return "info";
+        case LogLevel::Warning:
+            return "warning";
+        case LogLevel::Error:
+            return "error";
     }
     return "?";
 }
@@ -28,9 +32,13 @@ void setLogSink(LogSink sink) {
     currentSink = std::move(sink);
 }
 
-void setLogLevel(LogLevel level) { minimumLevel = static_cast<int>(level); }
+void setLogLevel(LogLevel level) {
+    minimumLevel = static_cast<int>(level);
+}
 
-LogLevel logLevel() { return static_cast<LogLevel>(minimumLevel.load()); }
+LogLevel logLevel() {
+    return static_cast<LogLevel>(minimumLevel.load());
+}
 
 void log(LogLevel level, const std::string& message) {
     if (static_cast<int>(level) < minimumLevel.load()) return;

@@ -31,8 +31,8 @@ public:
     // Compressive strength and toughness as a multiple of the tensile ones [-].
     double compressiveFactor() const { return compressiveFactor_; }
 
-    double shearModulus() const;      // mu = E / (2 (1 + nu)) [Pa]
-    double lameLambda() const;        // lambda = E nu / ((1 + nu)(1 - 2 nu)) [Pa]
+    double shearModulus() const;        // mu = E / (2 (1 + nu)) [Pa]
+    double lameLambda() const;          // lambda = E nu / ((1 + nu)(1 - 2 nu)) [Pa]
     double planeStrainModulus() const;  // E' = E / (1 - nu^2) [Pa]
     // Rayleigh wave speed c_R [m/s], Viktorov's approximation (0.862 + 1.14 nu)/(1 + nu) sqrt(mu/rho).
     double rayleighWaveSpeed() const;

@@ -62,11 +62,13 @@ TriangleMesh makeGeodesicSphere(double radius, int f) {
         throw Error("makeGeodesicSphere: radius must be positive and frequency in 1..256, got radius " +
                     std::to_string(radius) + ", frequency " + std::to_string(f));
     const double g = (1.0 + std::sqrt(5.0)) / 2.0;
-    const Eigen::Vector3d ico[12] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                                     {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-    const int faces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                              {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                              {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    const Eigen::Vector3d ico[12] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
+                                     {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
+                                     {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    const int faces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                              {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                              {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                              {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
     TriangleMesh mesh;
     mesh.name = "geodesic-sphere";
     // A lattice point is identified by its integer weights on the icosahedron's vertices, so
@@ -88,7 +90,8 @@ TriangleMesh makeGeodesicSphere(double radius, int f) {
         for (int i = 0; i < f; ++i)
             for (int j = 0; i + j < f; ++j) {
                 mesh.triangles.push_back({vertex(i, j), vertex(i + 1, j), vertex(i, j + 1)});
-                if (i + j + 1 < f) mesh.triangles.push_back({vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+                if (i + j + 1 < f)
+                    mesh.triangles.push_back({vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
             }
     }
     return mesh;
@@ -96,8 +99,9 @@ TriangleMesh makeGeodesicSphere(double radius, int f) {
 
 TriangleMesh makeTorus(double R, double r, int major, int minor) {
     if (!(r > 0.0 && r < R) || major < 3 || minor < 3)
-        throw Error("makeTorus: needs 0 < r < R and at least 3 x 3 segments, got R " + std::to_string(R) + ", r " +
-                    std::to_string(r) + ", " + std::to_string(major) + " x " + std::to_string(minor));
+        throw Error("makeTorus: needs 0 < r < R and at least 3 x 3 segments, got R " + std::to_string(R) +
+                    ", r " + std::to_string(r) + ", " + std::to_string(major) + " x " +
+                    std::to_string(minor));
     TriangleMesh m;
     m.name = "torus";
     for (int i = 0; i < major; ++i) {

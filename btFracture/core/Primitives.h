@@ -10,7 +10,8 @@ namespace btfracture {
 // Box centred at the origin with the given half extents [m]; each face is split into a grid of
 // about `cellsPerUnit * edge length` squares (at least one per direction, so the default is the
 // 8-vertex, 12-triangle box), two triangles each. `name` goes into the mesh for messages.
-TriangleMesh makeBox(const Eigen::Vector3d& halfExtents, double cellsPerUnit = 0.0, const std::string& name = "box");
+TriangleMesh makeBox(const Eigen::Vector3d& halfExtents, double cellsPerUnit = 0.0,
+                     const std::string& name = "box");
 
 // Box with an explicit number of grid cells along x, y and z.
 TriangleMesh makeBox(const Eigen::Vector3d& halfExtents, int cellsX, int cellsY, int cellsZ);

@@ -3,8 +3,8 @@
 #include <btFracture/bem/ElasticSolver.h>
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
-#include <btFracture/core/SelfIntersection.h>
 #include <btFracture/core/MassProperties.h>
+#include <btFracture/core/SelfIntersection.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/TractionBalance.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
@@ -37,12 +37,12 @@ public:
     // Closed surface the BEM mesh is remeshed from (state frame): the body's mesh; empty for a
     // fragment until its first BEM is built from its level set (LevelSetBody::bemSourceMesh).
     TriangleMesh bemSource;
-    CrackMesh carriedCracks;  // incomplete cracks inherited from a parent (state frame, §5.3)
-    std::unique_ptr<ElasticSolver> solver;            // BEM frame = state frame - solver->mesh().offset()
-    std::unique_ptr<TractionBalancer> balancer;       // on the BEM mesh, BEM frame
-    std::unique_ptr<FractureSolver> fracture;         // borrows *solver
-    std::map<int, int> cutTriangles;                  // crack sheet -> triangles already cut (no markers)
-    std::unique_ptr<CrackFronts> fronts;              // voxel-resolution fronts (state frame)
+    CrackMesh carriedCracks;                // incomplete cracks inherited from a parent (state frame, §5.3)
+    std::unique_ptr<ElasticSolver> solver;  // BEM frame = state frame - solver->mesh().offset()
+    std::unique_ptr<TractionBalancer> balancer;  // on the BEM mesh, BEM frame
+    std::unique_ptr<FractureSolver> fracture;    // borrows *solver
+    std::map<int, int> cutTriangles;             // crack sheet -> triangles already cut (no markers)
+    std::unique_ptr<CrackFronts> fronts;         // voxel-resolution fronts (state frame)
 };
 
 FrontQueries frontQueries(const LevelSetBody& levelSet) {
@@ -93,7 +93,9 @@ std::vector<int> advanceMarkers(BemFractureState& s, const CrackMesh& cracks,
     return std::vector<int>(r.arrestedCoarseNodes.begin(), r.arrestedCoarseNodes.end());
 }
 
-Eigen::Vector3d toState(const BemFractureState& s, const Eigen::Vector3d& bodyPoint) { return s.bodyToState * bodyPoint; }
+Eigen::Vector3d toState(const BemFractureState& s, const Eigen::Vector3d& bodyPoint) {
+    return s.bodyToState * bodyPoint;
+}
 
 Eigen::Isometry3d fragmentFrame(const Eigen::Vector3d& centreOfMass, const Eigen::Matrix3d& inertia) {
     // The world puts a fragment's body frame at its centre of mass along principalAxes (the same
@@ -166,7 +168,8 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
     settings.method = b.method;
     settings.hybridElementThreshold = std::max(1, b.hybridElementThreshold);
     if (b.materialNoise.amplitude > 0.0) settings.noise = b.materialNoise;
-    s.fracture = std::make_unique<FractureSolver>(*s.solver, MaterialField(body.material(), settings.noise), settings);
+    s.fracture =
+        std::make_unique<FractureSolver>(*s.solver, MaterialField(body.material(), settings.noise), settings);
     BemFractureState* state = &s;  // owned by the body, outlives its FractureSolver
     if (voxelFronts) {
         s.fracture->setGrowthObserver(
@@ -215,10 +218,12 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
         if (marked(sheet) || index < s.cutTriangles[sheet]) continue;
         TriangleMesh& m = out[sheet];
         const auto& tri = cracks.triangle(t);
-        m.triangles.push_back({vertex(m, cracks.node(tri[0])), vertex(m, cracks.node(tri[1])), vertex(m, cracks.node(tri[2]))});
+        m.triangles.push_back(
+            {vertex(m, cracks.node(tri[0])), vertex(m, cracks.node(tri[1])), vertex(m, cracks.node(tri[2]))});
     }
     for (const auto& [sheet, count] : seen) s.cutTriangles[sheet] = count;
-    const auto frames = displacementCorrelation(cracks, Eigen::VectorXd::Zero(3 * cracks.nodeCount()), s.fracture->solver().material());
+    const auto frames = displacementCorrelation(cracks, Eigen::VectorXd::Zero(3 * cracks.nodeCount()),
+                                                s.fracture->solver().material());
     std::map<int, Eigen::Vector3d> ahead;
     for (const auto& f : frames) ahead[f.node] = f.frame.ahead;
     for (const auto& e : cracks.frontEdges()) {
@@ -247,10 +252,14 @@ bool hasVolume(const TriangleMesh& mesh, double volume) {
 
 FragmentSpec::Class specClass(FragmentClass c) {
     switch (c) {
-        case FragmentClass::ConvexHull: return FragmentSpec::Class::ConvexHull;
-        case FragmentClass::Unbreakable: return FragmentSpec::Class::Mesh;
-        case FragmentClass::Breakable: return FragmentSpec::Class::Breakable;
-        case FragmentClass::KeepsParentSolver: return FragmentSpec::Class::KeepsParentSolver;
+        case FragmentClass::ConvexHull:
+            return FragmentSpec::Class::ConvexHull;
+        case FragmentClass::Unbreakable:
+            return FragmentSpec::Class::Mesh;
+        case FragmentClass::Breakable:
+            return FragmentSpec::Class::Breakable;
+        case FragmentClass::KeepsParentSolver:
+            return FragmentSpec::Class::KeepsParentSolver;
     }
     return FragmentSpec::Class::Mesh;
 }
@@ -262,7 +271,8 @@ BemFractureEngine::BemFractureEngine(const BemFractureEngineSettings& settings) 
     settings_.fragments.validate();
 }
 
-double BemFractureEngine::meanCurvature(const btFractureRigidBody& body, const Eigen::Vector3d& bodyPoint) const {
+double BemFractureEngine::meanCurvature(const btFractureRigidBody& body,
+                                        const Eigen::Vector3d& bodyPoint) const {
     const auto* s = dynamic_cast<const BemFractureState*>(body.fractureState());
     if (!s || !s->levelSet) return FractureEngine::meanCurvature(body, bodyPoint);
     // A contact on a convex hull or decomposition can lie farther from the true surface than
@@ -271,20 +281,24 @@ double BemFractureEngine::meanCurvature(const btFractureRigidBody& body, const E
     if (std::abs(s->levelSet->signedDistance(p)) >= 2.5 * s->levelSet->voxelSize()) {
         static std::once_flag logged;
         std::call_once(logged, [&] {
-            logf(LogLevel::Info, body.name(), ": contact point more than 2.5 voxels from the level-set surface ",
-                 "(collision shape wider than the body); curvature from the mesh there. Reported once per process");
+            logf(LogLevel::Info, body.name(),
+                 ": contact point more than 2.5 voxels from the level-set surface ",
+                 "(collision shape wider than the body); curvature from the mesh there. Reported once per "
+                 "process");
         });
         return FractureEngine::meanCurvature(body, bodyPoint);
     }
     try {
         return s->levelSet->meanCurvature(p);
     } catch (const Error& e) {  // the projection onto the surface failed (a thin or cracked region)
-        logf(LogLevel::Info, body.name(), ": level-set curvature failed (", e.what(), "); curvature from the mesh");
+        logf(LogLevel::Info, body.name(), ": level-set curvature failed (", e.what(),
+             "); curvature from the mesh");
         return FractureEngine::meanCurvature(body, bodyPoint);
     }
 }
 
-FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
+FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
+                                            const std::vector<BodyContact>& contacts,
                                             FractureStatistics& stats) {
     FractureOutcome outcome;
     Timer timer;

@@ -4,9 +4,9 @@
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/Timer.h>
-#include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/dynamics/TractionBalance.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
+#include <btFracture/geometry/ConvexHull.h>
 
 #include <Eigen/Geometry>
 

@@ -6,10 +6,10 @@
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/ContactCurvature.h>
-#include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/HertzContact.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
+#include <btFracture/geometry/ConvexHull.h>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btCollisionConfiguration.h>
@@ -255,7 +255,8 @@ void requireFiniteState(const btRigidBody* body) {
     const double sum = double(v.x()) + v.y() + v.z() + w.x() + w.y() + w.z() + p.x() + p.y() + p.z() + q.x() +
                        q.y() + q.z() + q.w();
     if (!std::isfinite(sum))
-        throw Error(f->name() + ": non-finite position, orientation or velocity (NaN or Inf); not added to the world");
+        throw Error(f->name() +
+                    ": non-finite position, orientation or velocity (NaN or Inf); not added to the world");
 }
 
 }  // namespace

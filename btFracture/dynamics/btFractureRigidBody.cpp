@@ -3,9 +3,9 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
+#include <btFracture/core/Primitives.h>
 #include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/ContactCurvature.h>
-#include <btFracture/core/Primitives.h>
 #include <btFracture/geometry/ConvexHull.h>
 
 #include <BulletCollision/CollisionShapes/btBoxShape.h>

@@ -24,7 +24,8 @@ Obstacle firstObstacle(const CrackMesh& cracks, int node, const Eigen::Vector3d&
     for (int c = 0; c < cracks.triangleCount(); ++c) {
         const auto& tri = cracks.triangle(c);
         if (tri[0] == node || tri[1] == node || tri[2] == node) continue;
-        const double hit = segmentTriangleHit(p, q, cracks.node(tri[0]), cracks.node(tri[1]), cracks.node(tri[2]));
+        const double hit =
+            segmentTriangleHit(p, q, cracks.node(tri[0]), cracks.node(tri[1]), cracks.node(tri[2]));
         if (hit > 1e-9 && hit < o.t) o = {hit, true};
     }
     return o;
@@ -32,7 +33,8 @@ Obstacle firstObstacle(const CrackMesh& cracks, int node, const Eigen::Vector3d&
 
 // Adds triangle (apex, from, to), whose edge from -> to becomes front, split at its midpoint
 // when longer than maxEdge (the apex stays the same, so the orientation is kept).
-int addFrontTriangle(CrackMesh& cracks, int apex, int from, int to, double maxEdge, std::vector<char>& arrested) {
+int addFrontTriangle(CrackMesh& cracks, int apex, int from, int to, double maxEdge,
+                     std::vector<char>& arrested) {
     if ((cracks.node(to) - cracks.node(from)).norm() <= maxEdge) {
         cracks.addTriangle(apex, from, to);
         return 1;
@@ -46,8 +48,8 @@ int addFrontTriangle(CrackMesh& cracks, int apex, int from, int to, double maxEd
 
 }  // namespace
 
-GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& advances, const SurfaceMesh& body,
-                        double maxEdge, std::vector<char>& arrested) {
+GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& advances,
+                        const SurfaceMesh& body, double maxEdge, std::vector<char>& arrested) {
     GrowthResult result;
     arrested.resize(cracks.nodeCount(), 0);
     // New node for every moving, unarrested front node (ordered by node index: deterministic).
@@ -82,7 +84,8 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
         const bool movesA = ia != moved.end(), movesB = ib != moved.end();
         if (movesA && movesB) {
             cracks.addTriangle(e.b, e.a, ia->second);
-            result.newTriangles += 1 + addFrontTriangle(cracks, e.b, ia->second, ib->second, maxEdge, arrested);
+            result.newTriangles +=
+                1 + addFrontTriangle(cracks, e.b, ia->second, ib->second, maxEdge, arrested);
         } else if (movesA) {  // new front a' -> b
             result.newTriangles += addFrontTriangle(cracks, e.a, ia->second, e.b, maxEdge, arrested);
         } else if (movesB) {  // new front a -> b'

@@ -16,14 +16,14 @@ namespace btfracture {
 struct GrowthResult {
     int advancedNodes = 0;
     int newTriangles = 0;
-    int arrestedNodes = 0;          // newly arrested in this step
+    int arrestedNodes = 0;           // newly arrested in this step
     std::map<int, double> advanced;  // old front node -> distance it moved [m]
 };
 
 // `advances[node]` holds the motion of each front node (distance 0 = stays). `arrested` (per
 // crack node, grown as needed) marks nodes that never move again. New front edges longer than
 // `maxEdge` [m] are split.
-GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& advances, const SurfaceMesh& body,
-                        double maxEdge, std::vector<char>& arrested);
+GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& advances,
+                        const SurfaceMesh& body, double maxEdge, std::vector<char>& arrested);
 
 }  // namespace btfracture

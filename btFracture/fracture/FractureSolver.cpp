@@ -17,7 +17,8 @@ namespace btfracture {
 FractureSolver::FractureSolver(const ElasticSolver& solver, MaterialField field, FractureSettings settings)
     : solver_(solver), field_(std::move(field)), settings_(settings) {
     settings_.validate();
-    active_ = settings_.method == FractureMethod::Estimated ? FractureMethod::Estimated : FractureMethod::Full;
+    active_ =
+        settings_.method == FractureMethod::Estimated ? FractureMethod::Estimated : FractureMethod::Full;
     const SurfaceMesh& mesh = solver_.mesh();
     for (int t = 0; t < mesh.triangleCount(); ++t) meanSize_ += mesh.diameter(t) / mesh.triangleCount();
     seeded_.assign(mesh.triangleCount(), 0);
@@ -54,8 +55,8 @@ int FractureSolver::seed() {
     const auto stresses =
         surfaceStresses(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), displacements_, tractions_);
     const auto candidates = findSeedCandidates(solver_.mesh(), stresses, field_, cracks_, seeded_);
-    const int seeds =
-        seedCracks(cracks_, solver_.mesh(), candidates, settings_.maxNewCracksPerEvent, settings_.seedRadius, seeded_);
+    const int seeds = seedCracks(cracks_, solver_.mesh(), candidates, settings_.maxNewCracksPerEvent,
+                                 settings_.seedRadius, seeded_);
     arrested_.resize(cracks_.nodeCount(), 0);
     if (seeds > 0) {
         cracks_.refreshUnknowns();
@@ -82,14 +83,17 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
         return all;
     }
     // EST: frames from the crack geometry, SIFs from the surface-only local stress (§4.2).
-    std::vector<FrontSifs> frames = displacementCorrelation(cracks_, Eigen::VectorXd::Zero(3 * cracks_.nodeCount()), m);
-    const StressEvaluator stress(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), displacements_, tractions_);
+    std::vector<FrontSifs> frames =
+        displacementCorrelation(cracks_, Eigen::VectorXd::Zero(3 * cracks_.nodeCount()), m);
+    const StressEvaluator stress(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), displacements_,
+                                 tractions_);
     std::vector<FrontSifs> out;
     out.reserve(frames.size());
     for (const FrontSifs& f : frames) {
         if (skip(f)) continue;
         double area = 0.0;
-        if (!cracks_.trianglesAtNode(f.node).empty()) area = cracks_.sheetArea(cracks_.trianglesAtNode(f.node)[0]);
+        if (!cracks_.trianglesAtNode(f.node).empty())
+            area = cracks_.sheetArea(cracks_.trianglesAtNode(f.node)[0]);
         FrontSifs e = estimateSifs(f.frame, stress.stressAt(f.position), area, m.compressiveFactor(),
                                    settings_.estimatorGeometryFactor);
         e.node = f.node;
@@ -117,10 +121,13 @@ FractureStepRecord FractureSolver::step(int index) {
     const Material& m = field_.material();
     std::map<int, FrontAdvance> advances;
     for (const FrontSifs& f : sifs) {
-        const double Kc = field_.fractureToughness(f.position) * (f.compressive ? m.compressiveFactor() : 1.0);
-        record.maxLoadRatio = std::max(record.maxLoadRatio, effectiveK(f.KI, f.KII, f.KIII, m.poissonRatio()) / Kc);
-        advances[f.node] = advanceOf(f, field_.fractureToughness(f.position), m.compressiveFactor(), m.poissonRatio(),
-                                     settings_.frontEdgeLength * meanSize_, settings_.minimumSpeed);
+        const double Kc =
+            field_.fractureToughness(f.position) * (f.compressive ? m.compressiveFactor() : 1.0);
+        record.maxLoadRatio =
+            std::max(record.maxLoadRatio, effectiveK(f.KI, f.KII, f.KIII, m.poissonRatio()) / Kc);
+        advances[f.node] =
+            advanceOf(f, field_.fractureToughness(f.position), m.compressiveFactor(), m.poissonRatio(),
+                      settings_.frontEdgeLength * meanSize_, settings_.minimumSpeed);
     }
     int stopped = 0;
     if (observer_)
@@ -140,7 +147,8 @@ FractureStepRecord FractureSolver::step(int index) {
     return record;
 }
 
-void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs, const std::map<int, double>& advanced) {
+void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
+                                      const std::map<int, double>& advanced) {
     const std::vector<int> fresh = cracks_.refreshUnknowns();
     if (active_ == FractureMethod::Full) {
         full_->update();
@@ -160,8 +168,10 @@ void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs, const 
         const int node = fresh[i];
         Eigen::Vector3d opening = Eigen::Vector3d::Zero();
         const auto moved = advanced.find(node);
-        const auto f = std::find_if(sifs.begin(), sifs.end(), [node](const FrontSifs& s) { return s.node == node; });
-        if (moved != advanced.end() && f != sifs.end()) opening = openingFromSifs(*f, moved->second, field_.material());
+        const auto f =
+            std::find_if(sifs.begin(), sifs.end(), [node](const FrontSifs& s) { return s.node == node; });
+        if (moved != advanced.end() && f != sifs.end())
+            opening = openingFromSifs(*f, moved->second, field_.material());
         estimatedOpenings_.segment<3>(3 * node) = opening;
         unknowns.push_back(cracks_.unknownOf(node));
         cod.segment<3>(3 * i) = opening;
@@ -176,7 +186,8 @@ void FractureSolver::switchToEstimator() {
     // Keep what FULL knew: the crack load C cod of the current openings; then drop D.
     if (full_ && cracks_.unknownCount() > 0) {
         Eigen::VectorXd cod(3 * cracks_.unknownCount());
-        for (int k = 0; k < cracks_.unknownCount(); ++k) cod.segment<3>(3 * k) = solvedOpenings_.segment<3>(3 * cracks_.nodeOfUnknown()[k]);
+        for (int k = 0; k < cracks_.unknownCount(); ++k)
+            cod.segment<3>(3 * k) = solvedOpenings_.segment<3>(3 * cracks_.nodeOfUnknown()[k]);
         crackLoad_ = full_->surfaceCrackBlock() * cod;
         estimatedOpenings_ = solvedOpenings_;
     }
@@ -201,7 +212,8 @@ FractureEventReport FractureSolver::run(const Eigen::VectorXd& q, double contact
     // Budget: the contact time at the Rayleigh speed, one element per step (FractureRB).
     int budget = settings_.maxStepsPerEvent;
     if (contactDuration > 0.0) {
-        const double steps = contactDuration * field_.material().rayleighWaveSpeed() / (settings_.frontEdgeLength * meanSize_);
+        const double steps =
+            contactDuration * field_.material().rayleighWaveSpeed() / (settings_.frontEdgeLength * meanSize_);
         budget = std::min(budget, std::max(1, static_cast<int>(std::lround(steps))));
     }
     for (int i = 0; i < budget && !cracks_.frontEdges().empty(); ++i) {

@@ -26,8 +26,8 @@ struct FractureStepRecord {
     int step = 0;
     FractureMethod method = FractureMethod::Full;  // Full or Estimated
     int frontNodes = 0, advancedNodes = 0, arrestedNodes = 0;
-    int crackTriangles = 0;        // after the step
-    double maxLoadRatio = 0.0;     // max K_eff / K_c over the front before the step
+    int crackTriangles = 0;     // after the step
+    double maxLoadRatio = 0.0;  // max K_eff / K_c over the front before the step
     double sifSeconds = 0.0, growthSeconds = 0.0;
 };
 
@@ -57,11 +57,11 @@ public:
 
     // The pieces of run(), for tests and benchmarks:
     void beginEvent(const Eigen::VectorXd& tractions);  // crack-free / current solve, stresses
-    int seed();                                          // initiation; returns new seeds
+    int seed();                                         // initiation; returns new seeds
     // SIFs of the active method now; with activeOnly, arrested front nodes are left out (EST then
     // evaluates the local stress only where the front can still move: cost ~ active front).
     std::vector<FrontSifs> frontSifs(bool activeOnly = false);
-    FractureStepRecord step(int index);                  // one propagation step
+    FractureStepRecord step(int index);  // one propagation step
 
     // Called in every step with the front advances (BEM frame) before the sheets grow; returns
     // front nodes that must stop for good (the high-resolution front's arrest feedback,
@@ -89,7 +89,7 @@ private:
     CrackMesh cracks_;
     std::unique_ptr<CrackSystem> full_;  // FULL mode only
     FractureMethod active_;
-    double meanSize_ = 0.0;              // mean BEM triangle diameter h [m]
+    double meanSize_ = 0.0;  // mean BEM triangle diameter h [m]
     Eigen::VectorXd tractions_, load_, crackLoad_, displacements_;
     Eigen::VectorXd estimatedOpenings_;  // EST: per crack node, 3 each
     Eigen::VectorXd solvedOpenings_;     // FULL: per crack node, 3 each

@@ -14,13 +14,15 @@ namespace {
 
 double distanceToFront(const CrackMesh& cracks, const Eigen::Vector3d& x) {
     double best = INFINITY;
-    for (const auto& e : cracks.frontEdges()) best = std::min({best, (cracks.node(e.a) - x).norm(), (cracks.node(e.b) - x).norm()});
+    for (const auto& e : cracks.frontEdges())
+        best = std::min({best, (cracks.node(e.a) - x).norm(), (cracks.node(e.b) - x).norm()});
     return best;
 }
 
 }  // namespace
 
-std::vector<SeedCandidate> findSeedCandidates(const SurfaceMesh& mesh, const std::vector<Eigen::Matrix3d>& stresses,
+std::vector<SeedCandidate> findSeedCandidates(const SurfaceMesh& mesh,
+                                              const std::vector<Eigen::Matrix3d>& stresses,
                                               const MaterialField& field, const CrackMesh& cracks,
                                               const std::vector<char>& blocked) {
     const double factor = field.material().compressiveFactor();
@@ -40,12 +42,13 @@ std::vector<SeedCandidate> findSeedCandidates(const SurfaceMesh& mesh, const std
         c.crackNormal = eig.eigenvectors().col(c.compressive ? 0 : 2);
         out.push_back(c);
     }
-    std::stable_sort(out.begin(), out.end(), [](const SeedCandidate& a, const SeedCandidate& b) { return a.excess > b.excess; });
+    std::stable_sort(out.begin(), out.end(),
+                     [](const SeedCandidate& a, const SeedCandidate& b) { return a.excess > b.excess; });
     return out;
 }
 
-int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<SeedCandidate>& candidates, int maxSeeds,
-               double seedRadius, std::vector<char>& blocked) {
+int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<SeedCandidate>& candidates,
+               int maxSeeds, double seedRadius, std::vector<char>& blocked) {
     int seeds = 0;
     std::vector<Eigen::Vector3d> seededAt;
     for (const SeedCandidate& c : candidates) {
@@ -53,11 +56,14 @@ int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<See
         const Eigen::Vector3d& surfaceNormal = mesh.normal(c.triangle);
         const Eigen::Vector3d x = mesh.centroid(c.triangle);
         const double h = mesh.diameter(c.triangle);
-        if (std::any_of(seededAt.begin(), seededAt.end(), [&](const Eigen::Vector3d& p) { return (p - x).norm() < h; })) continue;
+        if (std::any_of(seededAt.begin(), seededAt.end(),
+                        [&](const Eigen::Vector3d& p) { return (p - x).norm() < h; }))
+            continue;
         // Inward direction within the crack plane.
         Eigen::Vector3d inward = -(surfaceNormal - surfaceNormal.dot(c.crackNormal) * c.crackNormal);
         if (inward.norm() < 0.3) {  // crack plane within ~17 degrees of the surface: no seed
-            logf(LogLevel::Debug, "initiation: triangle ", c.triangle, " skipped, crack plane parallel to the surface");
+            logf(LogLevel::Debug, "initiation: triangle ", c.triangle,
+                 " skipped, crack plane parallel to the surface");
             continue;
         }
         inward.normalize();

@@ -16,14 +16,15 @@ namespace btfracture {
 
 struct SeedCandidate {
     int triangle = -1;
-    double excess = 0.0;              // principal stress / its strength, > 1
-    Eigen::Vector3d crackNormal;      // principal direction (unit)
+    double excess = 0.0;          // principal stress / its strength, > 1
+    Eigen::Vector3d crackNormal;  // principal direction (unit)
     bool compressive = false;
 };
 
 // Triangles whose principal stress exceeds the strength, most overloaded first. Skips
 // triangles in `blocked` and those closer to an existing front node than their longest edge.
-std::vector<SeedCandidate> findSeedCandidates(const SurfaceMesh& mesh, const std::vector<Eigen::Matrix3d>& stresses,
+std::vector<SeedCandidate> findSeedCandidates(const SurfaceMesh& mesh,
+                                              const std::vector<Eigen::Matrix3d>& stresses,
                                               const MaterialField& field, const CrackMesh& cracks,
                                               const std::vector<char>& blocked);
 

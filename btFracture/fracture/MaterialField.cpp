@@ -36,7 +36,8 @@ double valueNoise(const Eigen::Vector3d& p, std::uint64_t seed) {
 
 }  // namespace
 
-MaterialField::MaterialField(const Material& material, const MaterialNoise& noise) : material_(material), noise_(noise) {
+MaterialField::MaterialField(const Material& material, const MaterialNoise& noise)
+    : material_(material), noise_(noise) {
     FractureSettings check;
     check.noise = noise;
     check.validate();
@@ -47,7 +48,9 @@ double MaterialField::variation(const Eigen::Vector3d& x) const {
     return 1.0 + noise_.amplitude * (2.0 * valueNoise(x / noise_.wavelength, noise_.seed) - 1.0);
 }
 
-double MaterialField::tensileStrength(const Eigen::Vector3d& x) const { return material_.tensileStrength() * variation(x); }
+double MaterialField::tensileStrength(const Eigen::Vector3d& x) const {
+    return material_.tensileStrength() * variation(x);
+}
 
 double MaterialField::fractureToughness(const Eigen::Vector3d& x) const {
     return material_.fractureToughness() * variation(x);

@@ -20,8 +20,8 @@ double modeRatioForKink(double theta);
 double effectiveK(double KI, double KII, double KIII, double poissonRatio);
 
 struct FrontAdvance {
-    double distance = 0.0;  // [m]; 0 = the point does not move
-    double angle = 0.0;     // kink angle [rad]
+    double distance = 0.0;                                // [m]; 0 = the point does not move
+    double angle = 0.0;                                   // kink angle [rad]
     Eigen::Vector3d direction = Eigen::Vector3d::Zero();  // unit, in the plane of m and n
 };
 

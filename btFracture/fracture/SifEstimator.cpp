@@ -23,7 +23,8 @@ bool kinkTowards(const FrontFrame& f, const Eigen::Vector3d& v, double& theta) {
 
 }  // namespace
 
-EstimatorChoice chooseEigenvector(const FrontFrame& frame, const Eigen::Matrix3d& stress, double compressiveFactor) {
+EstimatorChoice chooseEigenvector(const FrontFrame& frame, const Eigen::Matrix3d& stress,
+                                  double compressiveFactor) {
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(stress);  // ascending eigenvalues
     const Eigen::Vector3d values = eig.eigenvalues();
     EstimatorChoice choice;
@@ -40,7 +41,8 @@ EstimatorChoice chooseEigenvector(const FrontFrame& frame, const Eigen::Matrix3d
     }
     // Second largest against the most negative (scaled by the compressive toughness ratio).
     const bool negative = values[0] < 0.0;
-    const double second = std::abs(values[1]), compressive = negative ? std::abs(values[0]) / compressiveFactor : -1.0;
+    const double second = std::abs(values[1]),
+                 compressive = negative ? std::abs(values[0]) / compressiveFactor : -1.0;
     const int first = compressive > second ? 0 : 1, other = first == 0 ? 1 : 0;
     if (kinkTowards(frame, eig.eigenvectors().col(first), theta)) {
         take(first);
@@ -60,7 +62,8 @@ FrontSifs estimateSifs(const FrontFrame& frame, const Eigen::Matrix3d& stress, d
     const EstimatorChoice choice = chooseEigenvector(frame, stress, compressiveFactor);
     const double scale = k * std::pow(M_PI * crackArea, 0.25);
     const double r = modeRatioForKink(choice.kink);
-    const double magnitude = std::abs(choice.eigenvalue) * scale / (choice.compressive ? compressiveFactor : 1.0);
+    const double magnitude =
+        std::abs(choice.eigenvalue) * scale / (choice.compressive ? compressiveFactor : 1.0);
     f.KI = magnitude / std::sqrt(1.0 + r * r);
     f.KII = r * f.KI;
     f.KIII = scale * frame.tangent.dot(stress * frame.normal);

@@ -21,7 +21,8 @@ struct EstimatorChoice {
 // Chooses the eigenvector (§4.2): the largest eigenvalue's if its kink is admissible
 // (cos theta >= 1/3), otherwise whichever of the second largest and the most negative (divided
 // by the compressive factor) is larger in magnitude and admissible, otherwise the remaining one.
-EstimatorChoice chooseEigenvector(const FrontFrame& frame, const Eigen::Matrix3d& stress, double compressiveFactor);
+EstimatorChoice chooseEigenvector(const FrontFrame& frame, const Eigen::Matrix3d& stress,
+                                  double compressiveFactor);
 
 // Estimated SIFs at a front point with frame `frame`, local stress `stress` [Pa] and crack area
 // `crackArea` [m^2]. K_I is positive; a compressive choice is flagged in `compressive`.

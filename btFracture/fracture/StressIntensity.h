@@ -18,11 +18,11 @@ struct FrontFrame {
 };
 
 struct FrontSifs {
-    int node = -1;              // crack node on the front
-    Eigen::Vector3d position;   // [m], body frame
+    int node = -1;             // crack node on the front
+    Eigen::Vector3d position;  // [m], body frame
     FrontFrame frame;
     double KI = 0, KII = 0, KIII = 0;  // [Pa m^(1/2)]
-    double spacing = 0;         // mean length of the adjacent front edges [m]
+    double spacing = 0;                // mean length of the adjacent front edges [m]
     // Driven by compression (EST's compressive eigenvector choice, or K_I < 0): the toughness
     // threshold is multiplied by the material's compressive factor.
     bool compressive = false;

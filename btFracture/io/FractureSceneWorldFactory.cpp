@@ -16,7 +16,8 @@ std::uint64_t combineSeeds(std::uint64_t runSeed, std::uint64_t bodySeed) {
     return z ^ (z >> 31);
 }
 
-FractureSceneWorldFactory::FractureSceneWorldFactory(std::uint64_t runSeed, const BemFractureEngineSettings& engine)
+FractureSceneWorldFactory::FractureSceneWorldFactory(std::uint64_t runSeed,
+                                                     const BemFractureEngineSettings& engine)
     : runSeed_(runSeed), engine_(engine) {}
 
 std::unique_ptr<btDiscreteDynamicsWorld> FractureSceneWorldFactory::createWorld(
@@ -29,9 +30,9 @@ std::unique_ptr<btDiscreteDynamicsWorld> FractureSceneWorldFactory::createWorld(
     return world;
 }
 
-std::unique_ptr<btRigidBody> FractureSceneWorldFactory::createBody(const btRigidBody::btRigidBodyConstructionInfo& info,
-                                                                   const SceneBody& description,
-                                                                   const TriangleMesh& surface) const {
+std::unique_ptr<btRigidBody> FractureSceneWorldFactory::createBody(
+    const btRigidBody::btRigidBodyConstructionInfo& info, const SceneBody& description,
+    const TriangleMesh& surface) const {
     if (!description.fracture.fracturable) return SceneWorldFactory::createBody(info, description, surface);
     if (description.isStatic() || description.motion == SceneMotion::Kinematic || !(info.m_mass > 0)) {
         logf(LogLevel::Warning, "body '", description.name, "' is ",
@@ -57,7 +58,8 @@ std::unique_ptr<btRigidBody> FractureSceneWorldFactory::createBody(const btRigid
     mesh.name = description.name;
     // `surface` is already in the body frame SceneWorld chose, so the model frame sits at the
     // start transform; btFractureRigidBody re-derives the centre of mass and principal axes.
-    return std::make_unique<btFractureRigidBody>(material, std::move(mesh), settings, info.m_startWorldTransform);
+    return std::make_unique<btFractureRigidBody>(material, std::move(mesh), settings,
+                                                 info.m_startWorldTransform);
 }
 
 }  // namespace btfracture

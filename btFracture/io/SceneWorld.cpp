@@ -324,8 +324,8 @@ const std::vector<SceneWorld::Body>& SceneWorld::bodies() const {
 void SceneWorld::replaceBody(const btRigidBody& parent,
                              const std::vector<std::pair<btFractureRigidBody*, std::string>>& fragments) {
     Impl& w = *impl_;
-    const auto found = std::find_if(w.bodies.begin(), w.bodies.end(),
-                                    [&](const Body& b) { return b.rigidBody == &parent; });
+    const auto found =
+        std::find_if(w.bodies.begin(), w.bodies.end(), [&](const Body& b) { return b.rigidBody == &parent; });
     if (found == w.bodies.end()) throw Error("SceneWorld::replaceBody: the broken body is not in the scene");
     std::vector<Body> pieces;
     for (const auto& [fragment, name] : fragments) {

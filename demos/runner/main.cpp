@@ -11,18 +11,18 @@
 #include <btFracture/core/Log.h>
 #include <btFracture/core/ThreadLimit.h>
 #include <btFracture/core/Timer.h>
-#include <btFracture/io/ContactSheet.h>
-#include <btFracture/io/FractureRbScene.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/geometry/LevelSetBody.h>
+#include <btFracture/io/ContactSheet.h>
+#include <btFracture/io/FractureRbScene.h>
 #include <btFracture/io/FractureRecorder.h>
 #include <btFracture/io/FractureRecorderListener.h>
 #include <btFracture/io/FractureSceneWorldFactory.h>
-#include <btFracture/io/SceneFractureListener.h>
 #include <btFracture/io/ObjWriter.h>
 #include <btFracture/io/PngFile.h>
 #include <btFracture/io/SceneFile.h>
+#include <btFracture/io/SceneFractureListener.h>
 #include <btFracture/io/ScenePreview.h>
 #include <btFracture/io/SceneWorld.h>
 
@@ -356,13 +356,14 @@ int run(const Options& options) {
         // every fractured level set when the scene asks for VDB output.
         FractureSceneWorldFactory fractureFactory(setup.scene.effects.seed);
         if (setup.scene.effects.outputs.vdb)
-            fractureFactory.setCutObserver([&](const btFractureRigidBody& body, const LevelSetBody& levelSet) {
-                std::string name = recorderListener ? recorderListener->nameOf(&body) : std::string();
-                if (name.empty()) name = body.name();
-                char file[64];
-                std::snprintf(file, sizeof file, "_%03d.vdb", ++levelSetFiles);
-                levelSet.writeVdb((dir / ("levelset_" + name + file)).string());
-            });
+            fractureFactory.setCutObserver(
+                [&](const btFractureRigidBody& body, const LevelSetBody& levelSet) {
+                    std::string name = recorderListener ? recorderListener->nameOf(&body) : std::string();
+                    if (name.empty()) name = body.name();
+                    char file[64];
+                    std::snprintf(file, sizeof file, "_%03d.vdb", ++levelSetFiles);
+                    levelSet.writeVdb((dir / ("levelset_" + name + file)).string());
+                });
         const SceneWorldFactory plainFactory;
         const SceneWorldFactory& factory =
             anyBreakable(setup.scene) ? static_cast<const SceneWorldFactory&>(fractureFactory) : plainFactory;

@@ -66,9 +66,11 @@ PatchResult patchTest(const SurfaceMesh& mesh, const Eigen::Matrix3d& sigma) {
     const SurfaceMesh& m = solver.mesh();
 
     PatchResult r{};
-    r.displacementError = maxNodalError(m, withoutRigidMotion(m, u), withoutRigidMotion(m, displacementsOf(m, eps)));
+    r.displacementError =
+        maxNodalError(m, withoutRigidMotion(m, u), withoutRigidMotion(m, displacementsOf(m, eps)));
     const double scale = sigma.norm();
-    for (const auto& s : surfaceStresses(m, E, nu, u, q)) r.surfaceStressError = std::max(r.surfaceStressError, (s - sigma).norm() / scale);
+    for (const auto& s : surfaceStresses(m, E, nu, u, q))
+        r.surfaceStressError = std::max(r.surfaceStressError, (s - sigma).norm() / scale);
     StressEvaluationSettings settings;
     const StressEvaluator evaluator(m, E, nu, u, q, settings);
     r.centreStressError = (evaluator.interiorStress(Eigen::Vector3d::Zero()) - sigma).norm() / scale;
@@ -87,8 +89,11 @@ TEST(NeumannSolution, PatchTestUniaxialTension) {
     Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
     sigma(0, 0) = 1e6;
     const PatchResult r = patchTest(mesh, sigma);
-    std::printf("uniaxial: %d triangles, displacement error %.2e, surface stress %.2e, centre stress %.2e, hand-over %.2e\n",
-                mesh.triangleCount(), r.displacementError, r.surfaceStressError, r.centreStressError, r.handOverMismatch);
+    std::printf(
+        "uniaxial: %d triangles, displacement error %.2e, surface stress %.2e, centre stress %.2e, hand-over "
+        "%.2e\n",
+        mesh.triangleCount(), r.displacementError, r.surfaceStressError, r.centreStressError,
+        r.handOverMismatch);
     EXPECT_LT(r.displacementError, 0.005);
     EXPECT_LT(r.surfaceStressError, 0.01);
     EXPECT_LT(r.centreStressError, 0.01);
@@ -99,8 +104,9 @@ TEST(NeumannSolution, PatchTestHydrostaticPressure) {
     const SurfaceMesh mesh(makeBox({0.5, 0.3, 0.25}, 6, 4, 3));
     const Eigen::Matrix3d sigma = -2e6 * Eigen::Matrix3d::Identity();
     const PatchResult r = patchTest(mesh, sigma);
-    std::printf("hydrostatic: displacement error %.2e, surface stress %.2e, centre stress %.2e, hand-over %.2e\n",
-                r.displacementError, r.surfaceStressError, r.centreStressError, r.handOverMismatch);
+    std::printf(
+        "hydrostatic: displacement error %.2e, surface stress %.2e, centre stress %.2e, hand-over %.2e\n",
+        r.displacementError, r.surfaceStressError, r.centreStressError, r.handOverMismatch);
     EXPECT_LT(r.displacementError, 0.005);
     EXPECT_LT(r.surfaceStressError, 0.01);
     EXPECT_LT(r.centreStressError, 0.01);
@@ -131,14 +137,18 @@ TEST(NeumannSolution, SphereUnderPressureConvergesToLame) {
         errors.push_back(mean);
         // No rigid drift: T u = 0 (paper Eq. 1-2), relative to the deformation's size.
         EXPECT_LT((solver.regulariser() * u).norm(), 1e-8 * std::abs(exact) * m.surfaceArea());
-        std::printf("sphere %5d triangles: |u_r / exact - 1| max %.3e, mean %.3e\n", m.triangleCount(), err, mean);
+        std::printf("sphere %5d triangles: |u_r / exact - 1| max %.3e, mean %.3e\n", m.triangleCount(), err,
+                    mean);
         if (level == 3) {
             EXPECT_EQ(m.triangleCount(), 1280);
             EXPECT_LT(err, 0.01);
             // Hand-over on the sphere: interior and surface stress agree at the blend distance.
             const StressEvaluator evaluator(m, E, nu, u, q);
-            const Eigen::Vector3d x = m.centroid(0) - StressEvaluationSettings{}.farFraction * m.diameter(0) * m.normal(0);
-            EXPECT_LT((evaluator.interiorStress(x) - evaluator.nearestSurfaceStress(x)).norm() / (p * std::sqrt(3.0)), 0.02);
+            const Eigen::Vector3d x =
+                m.centroid(0) - StressEvaluationSettings{}.farFraction * m.diameter(0) * m.normal(0);
+            EXPECT_LT((evaluator.interiorStress(x) - evaluator.nearestSurfaceStress(x)).norm() /
+                          (p * std::sqrt(3.0)),
+                      0.02);
         }
     }
     const double order1 = std::log2(errors[0] / errors[1]), order2 = std::log2(errors[1] / errors[2]);
@@ -160,7 +170,8 @@ TEST(NeumannSolution, RigidMotionOfTheDataLeavesStressUnchanged) {
     const Eigen::VectorXd moved = u + rigidMotions(solver.mesh()) * motion;
     const auto before = surfaceStresses(solver.mesh(), E, nu, u, q);
     const auto after = surfaceStresses(solver.mesh(), E, nu, moved, q);
-    for (std::size_t t = 0; t < before.size(); ++t) EXPECT_LT((before[t] - after[t]).norm(), 1e-9 * sigma.norm());
+    for (std::size_t t = 0; t < before.size(); ++t)
+        EXPECT_LT((before[t] - after[t]).norm(), 1e-9 * sigma.norm());
     const StressEvaluator a(solver.mesh(), E, nu, u, q), b(solver.mesh(), E, nu, moved, q);
     const Eigen::Vector3d x(0.1, -0.05, 0.02);
     EXPECT_LT((a.interiorStress(x) - b.interiorStress(x)).norm(), 1e-6 * sigma.norm());

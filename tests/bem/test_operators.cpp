@@ -24,7 +24,8 @@ const ElasticConstants kSteelLike{80e9, 0.3};
 // A non-convex, non-symmetric closed test body: a box with one corner pulled out.
 TriangleMesh skewedBox() {
     TriangleMesh mesh = makeBox({0.6, 0.4, 0.3}, 4, 3, 2);
-    for (auto& v : mesh.vertices) v += 0.15 * Eigen::Vector3d(v.y() * v.z(), 0.5 * v.x() * v.x(), 0.3 * v.x() * v.y());
+    for (auto& v : mesh.vertices)
+        v += 0.15 * Eigen::Vector3d(v.y() * v.z(), 0.5 * v.x() * v.x(), 0.3 * v.x() * v.y());
     return mesh;
 }
 
@@ -32,7 +33,8 @@ TriangleMesh skewedBox() {
 Eigen::Matrix3d kelvin(const Eigen::Vector3d& x, const Eigen::Vector3d& y, const ElasticConstants& c) {
     const Eigen::Vector3d d = y - x;
     const double r = d.norm();
-    return ((3.0 - 4.0 * c.poissonRatio) / r * Eigen::Matrix3d::Identity() + d * d.transpose() / (r * r * r)) /
+    return ((3.0 - 4.0 * c.poissonRatio) / r * Eigen::Matrix3d::Identity() +
+            d * d.transpose() / (r * r * r)) /
            (16.0 * M_PI * c.shearModulus * (1.0 - c.poissonRatio));
 }
 
@@ -49,9 +51,11 @@ Eigen::Matrix3d kelvinTraction(const Eigen::Vector3d& x, const Eigen::Vector3d& 
         Eigen::Matrix3d grad;  // grad(i, m) = d u_i / d y_m of the field u = U* e_k
         for (int i = 0; i < 3; ++i)
             for (int m = 0; m < 3; ++m)
-                grad(i, m) = scale * (-(3.0 - 4.0 * nu) * (i == k) * d[m] / r3 + ((i == m) * d[k] + (k == m) * d[i]) / r3 -
-                                      3.0 * d[i] * d[k] * d[m] / r5);
-        const Eigen::Matrix3d sigma = lambda * grad.trace() * Eigen::Matrix3d::Identity() + mu * (grad + grad.transpose());
+                grad(i, m) =
+                    scale * (-(3.0 - 4.0 * nu) * (i == k) * d[m] / r3 +
+                             ((i == m) * d[k] + (k == m) * d[i]) / r3 - 3.0 * d[i] * d[k] * d[m] / r5);
+        const Eigen::Matrix3d sigma =
+            lambda * grad.trace() * Eigen::Matrix3d::Identity() + mu * (grad + grad.transpose());
         out.row(k) = (sigma * n).transpose();
     }
     return out;
@@ -75,7 +79,8 @@ TEST(BoundaryOperators, StiffnessIsSymmetricWithRigidNullSpace) {
     // Positive semi-definite with exactly six (near-)zero eigenvalues: the rigid motions.
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(K);
     const double largest = eig.eigenvalues().maxCoeff();
-    for (int i = 0; i < 6; ++i) EXPECT_LT(std::abs(eig.eigenvalues()(i)), 1e-5 * largest) << "eigenvalue " << i;
+    for (int i = 0; i < 6; ++i)
+        EXPECT_LT(std::abs(eig.eigenvalues()(i)), 1e-5 * largest) << "eigenvalue " << i;
     EXPECT_GT(eig.eigenvalues()(6), 1e-4 * largest);
 }
 
@@ -106,11 +111,13 @@ TEST(BoundaryOperators, KupradzeFormOfDoubleLayerMatchesKelvinTraction) {
                 direct += w * kelvinTraction(x, y, mesh.normal(t), kSteelLike) * vy;
                 const Eigen::Vector3d d = x - y;
                 const double r = d.norm();
-                kupradze += w * (d.dot(mesh.normal(t)) / (4.0 * M_PI * r * r * r) * vy - curlV / (4.0 * M_PI * r) +
-                                 2.0 * kSteelLike.shearModulus * kelvin(x, y, kSteelLike) * curlV);
+                kupradze +=
+                    w * (d.dot(mesh.normal(t)) / (4.0 * M_PI * r * r * r) * vy - curlV / (4.0 * M_PI * r) +
+                         2.0 * kSteelLike.shearModulus * kelvin(x, y, kSteelLike) * curlV);
             }
         }
-        EXPECT_LT((direct - kupradze).norm(), 1e-8 * direct.norm()) << direct.transpose() << " vs " << kupradze.transpose();
+        EXPECT_LT((direct - kupradze).norm(), 1e-8 * direct.norm())
+            << direct.transpose() << " vs " << kupradze.transpose();
     }
 }
 

@@ -44,7 +44,8 @@ double coplanarReference(const Panel& x, const Panel& y) {
     const TriangleRule& rule = triangleRule(16);
     double sum = 0.0;
     auto point = [&](double u, double v) {
-        return x.corners[0] + (u / levels) * (x.corners[1] - x.corners[0]) + (v / levels) * (x.corners[2] - x.corners[0]);
+        return x.corners[0] + (u / levels) * (x.corners[1] - x.corners[0]) +
+               (v / levels) * (x.corners[2] - x.corners[0]);
     };
     for (int i = 0; i < levels; ++i)
         for (int j = 0; i + j < levels; ++j)
@@ -54,13 +55,16 @@ double coplanarReference(const Panel& x, const Panel& y) {
                 const Eigen::Vector3d b = up ? point(i + 1, j + 1) : point(i + 1, j);
                 const Eigen::Vector3d c = up ? point(i, j + 1) : point(i, j + 1);
                 for (const auto& q : rule.points)
-                    sum += x.area / (levels * levels) * q.w * inverseDistancePotential(q.l0 * a + q.l1 * b + q.l2 * c, y);
+                    sum += x.area / (levels * levels) * q.w *
+                           inverseDistancePotential(q.l0 * a + q.l1 * b + q.l2 * c, y);
             }
     return sum;
 }
 
 // int over the reference triangle {0 <= x2 <= x1 <= 1} of x1^a x2^b.
-double referenceMonomial(int a, int b) { return 1.0 / ((b + 1.0) * (a + b + 2.0)); }
+double referenceMonomial(int a, int b) {
+    return 1.0 / ((b + 1.0) * (a + b + 2.0));
+}
 
 }  // namespace
 
@@ -94,15 +98,18 @@ TEST(Quadrature, TriangleRulesIntegrateMonomialsExactly) {
 TEST(Quadrature, SauterSchwabMapsTileTheReferencePair) {
     // Products of monomials in x and y are smooth, so the transformed rule integrates them
     // exactly once the Gauss order covers their degree; a wrong map fails this at once.
-    for (PairRelation relation : {PairRelation::Identical, PairRelation::CommonEdge, PairRelation::CommonVertex})
+    for (PairRelation relation :
+         {PairRelation::Identical, PairRelation::CommonEdge, PairRelation::CommonVertex})
         for (int a = 0; a <= 2; ++a)
             for (int b = 0; b <= 2; ++b)
                 for (int c = 0; c <= 1; ++c)
                     for (int d = 0; d <= 2; ++d) {
                         double sum = 0.0;
-                        forEachSauterSchwabPoint(relation, 6, [&](double x1, double x2, double y1, double y2, double w) {
-                            sum += w * std::pow(x1, a) * std::pow(x2, b) * std::pow(y1, c) * std::pow(y2, d);
-                        });
+                        forEachSauterSchwabPoint(
+                            relation, 6, [&](double x1, double x2, double y1, double y2, double w) {
+                                sum +=
+                                    w * std::pow(x1, a) * std::pow(x2, b) * std::pow(y1, c) * std::pow(y2, d);
+                            });
                         EXPECT_NEAR(sum, referenceMonomial(a, b) * referenceMonomial(c, d), 1e-14)
                             << "relation " << static_cast<int>(relation) << " monomial " << a << b << c << d;
                     }

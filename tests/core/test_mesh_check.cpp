@@ -75,8 +75,9 @@ TEST(MeshCheck, InconsistentOrientation) {
 
 TEST(MeshCheck, DegenerateAndNonFinite) {
     TriangleMesh flat = tetrahedron();
-    flat.vertices[3] = {0.25, 0.25, 0.0};  // all four points coplanar: every face has zero volume, one has zero area
-    flat.vertices[2] = {0.5, 0.0, 0.0};    // collinear with 0 and 1
+    flat.vertices[3] = {0.25, 0.25,
+                        0.0};  // all four points coplanar: every face has zero volume, one has zero area
+    flat.vertices[2] = {0.5, 0.0, 0.0};  // collinear with 0 and 1
     EXPECT_GE(inspectMesh(flat).degenerateTriangles, 1);
 
     TriangleMesh nan = tetrahedron();

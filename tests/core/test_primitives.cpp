@@ -26,7 +26,7 @@ TEST(Primitives, GeodesicSphereConvergesToTheBall) {
         EXPECT_EQ(s.triangles.size(), 20u * f * f);
         EXPECT_EQ(s.vertices.size(), 10u * f * f + 2);
         const double error = 1.0 - computeMassProperties(s).volume / (4.0 / 3.0 * M_PI * 8.0);
-        EXPECT_GT(error, 0.0);  // inscribed
+        EXPECT_GT(error, 0.0);             // inscribed
         EXPECT_LT(error, previous / 3.5);  // second order: error / 4 per halving of h
         previous = error;
     }

@@ -165,7 +165,8 @@ public:
 };
 
 // Two runs' fragment poses agree bit for bit.
-inline void expectBitIdentical(const std::vector<btTransform>& first, const std::vector<btTransform>& second) {
+inline void expectBitIdentical(const std::vector<btTransform>& first,
+                               const std::vector<btTransform>& second) {
     ASSERT_GE(first.size(), 2u);
     ASSERT_EQ(first.size(), second.size());
     for (std::size_t i = 0; i < first.size(); ++i) {

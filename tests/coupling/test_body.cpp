@@ -2,8 +2,8 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Primitives.h>
-#include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
+#include <btFracture/geometry/ConvexHull.h>
 
 #include <btBulletDynamicsCommon.h>
 

@@ -3,8 +3,8 @@
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/Primitives.h>
-#include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/dynamics/PlaneSplitFractureEngine.h>
+#include <btFracture/geometry/ConvexHull.h>
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>

@@ -1,12 +1,12 @@
 #include "TestMeshes.h"
 
 #include <btFracture/core/MassProperties.h>
-#include <btFracture/dynamics/CollisionShapeBuilder.h>
 #include <btFracture/core/Primitives.h>
-#include <btFracture/geometry/ConvexHull.h>
+#include <btFracture/dynamics/CollisionShapeBuilder.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
+#include <btFracture/geometry/ConvexHull.h>
 
 #include <btBulletDynamicsCommon.h>
 

@@ -34,13 +34,15 @@ TEST(CrackSystem, SchurMatchesMonolithicAndIncrementalMatchesScratch) {
     // inner hexagon (one unknown, its centre), then the outer ring of triangles (six more).
     CrackMesh scratchCracks;
     CrackSystem scratch(solver, scratchCracks);
-    addDiscCrack(scratch.cracks(), Eigen::Vector3d(0.02, -0.01, 0.03), Eigen::Vector3d(0.1, 0.2, 1.0), 0.1, 2);
+    addDiscCrack(scratch.cracks(), Eigen::Vector3d(0.02, -0.01, 0.03), Eigen::Vector3d(0.1, 0.2, 1.0), 0.1,
+                 2);
     scratch.update();
     CrackMesh grownCracks;
     CrackSystem grown(solver, grownCracks);
     const CrackMesh& full = scratch.cracks();
     for (int i = 0; i < full.nodeCount(); ++i) grown.cracks().addNode(full.node(i));
-    for (int t = 0; t < 6; ++t) grown.cracks().addTriangle(full.triangle(t)[0], full.triangle(t)[1], full.triangle(t)[2]);
+    for (int t = 0; t < 6; ++t)
+        grown.cracks().addTriangle(full.triangle(t)[0], full.triangle(t)[1], full.triangle(t)[2]);
     EXPECT_EQ(grown.update(), 1);
     for (int t = 6; t < full.triangleCount(); ++t)
         grown.cracks().addTriangle(full.triangle(t)[0], full.triangle(t)[1], full.triangle(t)[2]);
@@ -49,11 +51,13 @@ TEST(CrackSystem, SchurMatchesMonolithicAndIncrementalMatchesScratch) {
 
     // Same geometry, same numbering of nodes and unknowns: blocks agree entry by entry.
     const double scaleC = scratch.surfaceCrackBlock().cwiseAbs().maxCoeff();
-    EXPECT_LT((grown.surfaceCrackBlock() - scratch.surfaceCrackBlock()).cwiseAbs().maxCoeff(), 1e-12 * scaleC);
+    EXPECT_LT((grown.surfaceCrackBlock() - scratch.surfaceCrackBlock()).cwiseAbs().maxCoeff(),
+              1e-12 * scaleC);
     const double scaleD = scratch.crackCrackBlock().cwiseAbs().maxCoeff();
     EXPECT_LT((grown.crackCrackBlock() - scratch.crackCrackBlock()).cwiseAbs().maxCoeff(), 1e-12 * scaleD);
     // D is symmetric (Galerkin hypersingular operator on the crack).
-    EXPECT_LT((scratch.crackCrackBlock() - scratch.crackCrackBlock().transpose()).cwiseAbs().maxCoeff(), 1e-9 * scaleD);
+    EXPECT_LT((scratch.crackCrackBlock() - scratch.crackCrackBlock().transpose()).cwiseAbs().maxCoeff(),
+              1e-9 * scaleD);
 
     const CrackSystem::Solution schur = scratch.solve(q);
     const CrackSystem::Solution mono = scratch.solveMonolithic(q);
@@ -85,8 +89,10 @@ TEST(CrackSystem, PennyCrackUnderTension) {
         worst = std::max(worst, std::abs(f.KI / exact - 1.0));
         shear = std::max({shear, std::abs(f.KII), std::abs(f.KIII)});
     }
-    std::printf("penny: %zu front nodes, K_I mean %.4f of exact, worst node %.2f %%, max |K_II|,|K_III| %.2f %% of K_I\n",
-                sifs.size(), mean / exact, 100 * worst, 100 * shear / exact);
+    std::printf(
+        "penny: %zu front nodes, K_I mean %.4f of exact, worst node %.2f %%, max |K_II|,|K_III| %.2f %% of "
+        "K_I\n",
+        sifs.size(), mean / exact, 100 * worst, 100 * shear / exact);
     EXPECT_NEAR(mean / exact, 1.0, 0.03);
     EXPECT_LT(worst, 0.06);
     EXPECT_LT(shear / exact, 0.03);
@@ -108,7 +114,8 @@ TEST(CrackSystem, InclinedPennyCrackMatchesKassirSih) {
     sigma(2, 2) = s;
     const CrackSystem::Solution sol = system.solve(uniformStressTractions(solver.mesh(), sigma));
     const auto sifs = displacementCorrelation(system.cracks(), system.nodalOpenings(sol), kMaterial);
-    const Eigen::Vector3d e1 = (Eigen::Vector3d::UnitZ() - normal.z() * normal).normalized(), e2 = normal.cross(e1);
+    const Eigen::Vector3d e1 = (Eigen::Vector3d::UnitZ() - normal.z() * normal).normalized(),
+                          e2 = normal.cross(e1);
     const PennyCrackSifs exact = pennyCrackSifs(s, a, alpha, nu);
     const double KI = exact.KI, KIIamp = exact.KIIAmplitude, KIIIamp = exact.KIIIAmplitude;
     double worst[3] = {0, 0, 0};
@@ -118,8 +125,8 @@ TEST(CrackSystem, InclinedPennyCrackMatchesKassirSih) {
         worst[1] = std::max(worst[1], std::abs(f.KII - KIIamp * std::cos(w)) / KIIamp);
         worst[2] = std::max(worst[2], std::abs(f.KIII - KIIIamp * std::sin(w)) / KIIIamp);
     }
-    std::printf("inclined penny: worst K_I %.2f %%, K_II %.2f %%, K_III %.2f %% of amplitude\n", 100 * worst[0],
-                100 * worst[1], 100 * worst[2]);
+    std::printf("inclined penny: worst K_I %.2f %%, K_II %.2f %%, K_III %.2f %% of amplitude\n",
+                100 * worst[0], 100 * worst[1], 100 * worst[2]);
     EXPECT_LT(worst[0], 0.05);
     EXPECT_LT(worst[1], 0.05);
     EXPECT_LT(worst[2], 0.05);
@@ -139,12 +146,13 @@ TEST(CrackSystem, CrackFacesAreTractionFreeUnderRefinement) {
     std::vector<double> worst;
     for (int rings : {4, 8}) {
         CrackMesh cracks;
-    CrackSystem system(solver, cracks);
+        CrackSystem system(solver, cracks);
         addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), normal, a, rings);
         system.update();
         const CrackSystem::Solution sol = system.solve(q);
         const Eigen::VectorXd cod = system.nodalOpenings(sol);
-        StressEvaluator evaluator(solver.mesh(), kMaterial.youngsModulus(), kMaterial.poissonRatio(), sol.displacements, q);
+        StressEvaluator evaluator(solver.mesh(), kMaterial.youngsModulus(), kMaterial.poissonRatio(),
+                                  sol.displacements, q);
         evaluator.addCracks(system.cracks(), cod);
         const CrackMesh& cm = system.cracks();
         double w = 0.0;

@@ -14,8 +14,8 @@
 
 #include <Eigen/Geometry>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -83,7 +83,8 @@ TEST(PropagationLaw, KinkAngleAndItsInverse) {
 }
 
 TEST(SifEstimator, AlignsTheCrackNormalWithThePrincipalDirection) {
-    FrontFrame frame{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX().cross(Eigen::Vector3d::UnitZ())};
+    FrontFrame frame{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(),
+                     Eigen::Vector3d::UnitX().cross(Eigen::Vector3d::UnitZ())};
     const double A = 1e-4, k = 2.0 / M_PI, s = 1e6;
     // Tension along the crack normal: pure mode I with K = k s (pi A)^(1/4).
     Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
@@ -123,8 +124,9 @@ TEST(FractureSolver, EstimatorTracksFullOnGrowingModeICrack) {
     double worstUpdated = 0.0, worstPlain = 0.0;
     for (std::size_t i = 0; i < std::min({full.size(), est.size(), plain.size()}); ++i) {
         const double e = est[i].KI / full[i].KI - 1.0, p = plain[i].KI / full[i].KI - 1.0;
-        std::printf("mode I step %zu: K_I FULL %.3e, EST %.3e (%+.1f %%), EST without update %.3e (%+.1f %%)\n", i,
-                    full[i].KI, est[i].KI, 100 * e, plain[i].KI, 100 * p);
+        std::printf(
+            "mode I step %zu: K_I FULL %.3e, EST %.3e (%+.1f %%), EST without update %.3e (%+.1f %%)\n", i,
+            full[i].KI, est[i].KI, 100 * e, plain[i].KI, 100 * p);
         worstUpdated = std::max(worstUpdated, std::abs(e));
         worstPlain = std::max(worstPlain, std::abs(p));
     }
@@ -148,15 +150,18 @@ TEST(FractureSolver, EstimatorTracksFullOnGrowingModeIICrack) {
     double worstUpdated = 0.0, worstPlain = 0.0;
     for (std::size_t i = 2; i < std::min({full.size(), est.size(), plain.size()}); ++i) {
         const double e = est[i].Keff / full[i].Keff - 1.0, p = plain[i].Keff / full[i].Keff - 1.0;
-        std::printf("mode II step %zu: K_eff FULL %.3e, EST %.3e (%+.1f %%), without update %+.1f %%; EST max kink %.1f deg\n",
-                    i, full[i].Keff, est[i].Keff, 100 * e, 100 * p, est[i].maxKinkAfterFirst * 180 / M_PI);
+        std::printf(
+            "mode II step %zu: K_eff FULL %.3e, EST %.3e (%+.1f %%), without update %+.1f %%; EST max kink "
+            "%.1f deg\n",
+            i, full[i].Keff, est[i].Keff, 100 * e, 100 * p, est[i].maxKinkAfterFirst * 180 / M_PI);
         worstUpdated = std::max(worstUpdated, std::abs(e));
         worstPlain = std::max(worstPlain, std::abs(p));
     }
     EXPECT_LT(worstUpdated, 0.15);
     EXPECT_GT(worstPlain, worstUpdated);
     // Once turned onto the principal plane the estimated path does not oscillate.
-    for (std::size_t i = 1; i < est.size(); ++i) EXPECT_LT(est[i].maxKinkAfterFirst, 10.0 * M_PI / 180.0) << "step " << i;
+    for (std::size_t i = 1; i < est.size(); ++i)
+        EXPECT_LT(est[i].maxKinkAfterFirst, 10.0 * M_PI / 180.0) << "step " << i;
 }
 
 TEST(FractureSolver, HybridSwitchesToTheEstimatorAtTheThreshold) {
@@ -187,7 +192,8 @@ TEST(FractureSolver, HybridSwitchesToTheEstimatorAtTheThreshold) {
     EXPECT_EQ(used.back(), FractureMethod::Estimated);
     // Once switched, never back.
     const auto firstEst = std::find(used.begin(), used.end(), FractureMethod::Estimated);
-    EXPECT_TRUE(std::all_of(firstEst, used.end(), [](FractureMethod m) { return m == FractureMethod::Estimated; }));
+    EXPECT_TRUE(
+        std::all_of(firstEst, used.end(), [](FractureMethod m) { return m == FractureMethod::Estimated; }));
 }
 
 TEST(FractureSolver, InitiationSeedsCracksPerpendicularToTension) {
@@ -206,7 +212,8 @@ TEST(FractureSolver, InitiationSeedsCracksPerpendicularToTension) {
     EXPECT_EQ(cracks.triangleCount(), 18);  // three hexagons
     const SurfaceMesh& m = s.solver->mesh();
     for (int t = 0; t < cracks.triangleCount(); ++t) EXPECT_GT(std::abs(cracks.normal(t).x()), 0.99);
-    for (int i = 0; i < cracks.nodeCount(); ++i) EXPECT_GT(windingNumber(m.nodes(), m.triangles(), cracks.node(i)), 0.5);
+    for (int i = 0; i < cracks.nodeCount(); ++i)
+        EXPECT_GT(windingNumber(m.nodes(), m.triangles(), cracks.node(i)), 0.5);
     // Tough material: nothing grows, no step advances.
     for (const auto& r : report.steps) EXPECT_EQ(r.advancedNodes, 0);
     // A second event at the same load seeds elsewhere: no new seed within the diameter of a
@@ -216,7 +223,8 @@ TEST(FractureSolver, InitiationSeedsCracksPerpendicularToTension) {
     EXPECT_LE(again.seeds, 3);
     double closest = INFINITY;
     for (int i = oldNodes; i < fracture.cracks().nodeCount(); ++i)
-        for (int j = 0; j < oldNodes; ++j) closest = std::min(closest, (fracture.cracks().node(i) - fracture.cracks().node(j)).norm());
+        for (int j = 0; j < oldNodes; ++j)
+            closest = std::min(closest, (fracture.cracks().node(i) - fracture.cracks().node(j)).norm());
     if (again.seeds > 0) {
         EXPECT_GT(closest, 0.01);
     }

@@ -31,7 +31,9 @@
 namespace btfracture {
 namespace {
 
-Eigen::Vector3d eig(const btVector3& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
+Eigen::Vector3d eig(const btVector3& v) {
+    return Eigen::Vector3d(v.x(), v.y(), v.z());
+}
 
 using test::FractureEventAccounting;
 using test::FractureEventCheck;
@@ -66,9 +68,11 @@ Outcome runScenario(const Expect& expect) {
     const double step = scene.world.dt / scene.world.substeps;
     FractureRecorderListener names(recorder, step);
     for (const auto& body : world.bodies())
-        if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody)) names.addOriginal(*b, body.name);
+        if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody))
+            names.addOriginal(*b, body.name);
     SceneFractureListener sceneListener(names, world);
-    FractureEventAccounting probe(step, [&](const btFractureRigidBody& parent) { return names.nameOf(&parent); });
+    FractureEventAccounting probe(step,
+                                  [&](const btFractureRigidBody& parent) { return names.nameOf(&parent); });
     // Order: the probe reads the parent before SceneWorld retires it; names come from the
     // recorder, which the scene listener calls.
     fractureWorld->addFractureListener(&probe);
@@ -88,7 +92,8 @@ Outcome runScenario(const Expect& expect) {
             if (p.cwiseAbs().maxCoeff() > 30.0 || (ground && p.y() < -0.05)) {
                 out.inside = false;
                 out.problem = body.name + " left the scene at step " + std::to_string(s) + ": (" +
-                              std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) + ")";
+                              std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " +
+                              std::to_string(p.z()) + ")";
             }
         }
         if (!out.finite) break;
@@ -108,7 +113,8 @@ TEST_P(Scenario, BreaksWhereExpectedConservingVolumeAndMomentum) {
     EXPECT_GE(a.events.front().time, expect.firstAfter) << expect.scene;
     EXPECT_LE(a.events.front().time, expect.firstBefore) << expect.scene;
     for (const char* body : expect.breaking)
-        EXPECT_TRUE(std::any_of(a.events.begin(), a.events.end(), [&](const FractureEventCheck& e) { return e.body == body; }))
+        EXPECT_TRUE(std::any_of(a.events.begin(), a.events.end(),
+                                [&](const FractureEventCheck& e) { return e.body == body; }))
             << expect.scene << ": " << body << " did not break";
     for (const FractureEventCheck& e : a.events) {
         EXPECT_GE(e.fragments, 2);
@@ -124,16 +130,17 @@ TEST_P(Scenario, BreaksWhereExpectedConservingVolumeAndMomentum) {
 
 // Steps cover the impact with a margin; windows bracket the first contact of the projectile or
 // the ground (free fall t = sqrt(2 h / g)).
-INSTANTIATE_TEST_SUITE_P(
-    PaperScenes, Scenario,
-    ::testing::Values(Expect{"column_bunny", 100, {"column"}, 0.15, 0.30},
-                      Expect{"bunny_smash", 30, {"bunny"}, 0.0, 0.08},
-                      Expect{"brick", 60, {"brick"}, 0.0, 0.05},
-                      Expect{"falling_boxes", 500, {"box2"}, 0.75, 1.0},
-                      Expect{"bowl_drop", 420, {"bowl"}, 0.70, 0.85},
-                      Expect{"armadillos", 40, {"left", "right"}, 0.02, 0.08},
-                      Expect{"window_pane", 15, {"pane"}, 0.005, 0.02}),
-    [](const ::testing::TestParamInfo<Expect>& info) { return std::string(info.param.scene); });
+INSTANTIATE_TEST_SUITE_P(PaperScenes, Scenario,
+                         ::testing::Values(Expect{"column_bunny", 100, {"column"}, 0.15, 0.30},
+                                           Expect{"bunny_smash", 30, {"bunny"}, 0.0, 0.08},
+                                           Expect{"brick", 60, {"brick"}, 0.0, 0.05},
+                                           Expect{"falling_boxes", 500, {"box2"}, 0.75, 1.0},
+                                           Expect{"bowl_drop", 420, {"bowl"}, 0.70, 0.85},
+                                           Expect{"armadillos", 40, {"left", "right"}, 0.02, 0.08},
+                                           Expect{"window_pane", 15, {"pane"}, 0.005, 0.02}),
+                         [](const ::testing::TestParamInfo<Expect>& info) {
+                             return std::string(info.param.scene);
+                         });
 
 }  // namespace
 }  // namespace btfracture

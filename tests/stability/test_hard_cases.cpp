@@ -2,9 +2,9 @@
 // physical BemFractureEngine at test resolution (BEM 1,000 triangles, default voxels), each
 // asserting at every step: no NaN or Inf in any body, nothing below the ground or out of a box
 // 50 body sizes wide, total mechanical energy (kinetic + gravitational) never above its start
-// value by more than 2 % of the start kinetic energy (at rest: of the slab's weight x height); at every fracture event: fragment mass and
-// volume within 3 % of the parent's and the swap's momentum identity (support/
-// FractureEventAccounting.h) to 1e-4; and, where something breaks, bit-identical fragment volumes
+// value by more than 2 % of the start kinetic energy (at rest: of the slab's weight x height); at every
+// fracture event: fragment mass and volume within 3 % of the parent's and the swap's momentum identity
+// (support/ FractureEventAccounting.h) to 1e-4; and, where something breaks, bit-identical fragment volumes
 // at every event and poses at the end when run twice (the refracture chains included).
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Material.h>
@@ -32,16 +32,18 @@ namespace {
 
 using test::FractureEventAccounting;
 
-btVector3 bt(const Eigen::Vector3d& v) { return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())); }
+btVector3 bt(const Eigen::Vector3d& v) {
+    return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z()));
+}
 
 struct Projectile {
-    double radius = 0.05;                                   // sphere radius [m], or ...
-    Eigen::Vector3d boxHalf = Eigen::Vector3d::Zero();      // ... a box when non-zero [m]
-    Eigen::Vector3d position{0.05, 0.13, 0.03};             // [m]
-    Eigen::Vector3d velocity{0.0, -10.0, 0.0};              // [m/s]
-    Eigen::Vector3d axis = Eigen::Vector3d::UnitX();        // orientation: axis, angle [rad]
+    double radius = 0.05;                               // sphere radius [m], or ...
+    Eigen::Vector3d boxHalf = Eigen::Vector3d::Zero();  // ... a box when non-zero [m]
+    Eigen::Vector3d position{0.05, 0.13, 0.03};         // [m]
+    Eigen::Vector3d velocity{0.0, -10.0, 0.0};          // [m/s]
+    Eigen::Vector3d axis = Eigen::Vector3d::UnitX();    // orientation: axis, angle [rad]
     double angle = 0.0;
-    double density = 7850.0;                                // [kg/m^3]
+    double density = 7850.0;  // [kg/m^3]
 };
 
 struct Case {
@@ -49,8 +51,8 @@ struct Case {
     int steps = 60;
     bool gravity = true;
     Material slabMaterial = Material::glass();
-    Material otherMaterial = Material::steel();       // projectiles and ground (world default)
-    Eigen::Vector3d slabHalf{0.2, 0.025, 0.2};          // [m]
+    Material otherMaterial = Material::steel();  // projectiles and ground (world default)
+    Eigen::Vector3d slabHalf{0.2, 0.025, 0.2};   // [m]
     // Instead of the box: this closed mesh (model frame), standing on the ground; slabHalf must
     // then be its bounding box's half extents (they set the scene box and energy scale).
     TriangleMesh slabMesh;
@@ -133,7 +135,8 @@ public:
         world->setFractureEngine(std::make_unique<BemFractureEngine>(engine));
         size = c.slabHalf.maxCoeff();
         groundShape = std::make_unique<btStaticPlaneShape>(btVector3(0, 1, 0), btScalar(0));  // any scale
-        ground = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, groundShape.get()));
+        ground = std::make_unique<btRigidBody>(
+            btRigidBody::btRigidBodyConstructionInfo(0, nullptr, groundShape.get()));
         world->addRigidBody(ground.get());
         btTransform t;
         t.setIdentity();
@@ -162,7 +165,8 @@ public:
             const btScalar mass = btScalar(p.density * volume);
             btVector3 inertia;
             shape->calculateLocalInertia(mass, inertia);
-            auto body = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(mass, nullptr, shape.get(), inertia));
+            auto body = std::make_unique<btRigidBody>(
+                btRigidBody::btRigidBodyConstructionInfo(mass, nullptr, shape.get(), inertia));
             btTransform pose(btQuaternion(bt(p.axis), btScalar(p.angle)), bt(p.position));
             body->setWorldTransform(pose);
             body->setLinearVelocity(bt(p.velocity));
@@ -186,7 +190,8 @@ public:
             const btRigidBody* b = btRigidBody::upcast(world->getCollisionObjectArray()[i]);
             if (!b || b->getInvMass() == 0) continue;
             const double m = 1.0 / b->getInvMass();
-            const btVector3 v = b->getLinearVelocity(), w = b->getAngularVelocity(), ii = b->getInvInertiaDiagLocal();
+            const btVector3 v = b->getLinearVelocity(), w = b->getAngularVelocity(),
+                            ii = b->getInvInertiaDiagLocal();
             const btVector3 wl = b->getWorldTransform().getBasis().transpose() * w;
             double rot = 0.0;
             for (int a = 0; a < 3; ++a)
@@ -289,9 +294,10 @@ Outcome expectStable(const Case& c, const char* name, size_t deterministicEvents
         EXPECT_NEAR(e.volumeRatio, 1.0, 0.03) << name << " at t = " << e.time;
         EXPECT_LT(e.momentumError, 1e-4) << name << " at t = " << e.time;
     }
-    std::printf("%s: %zu events, %d bodies at the end, energy growth %.2e, engine calls %llu, failures %llu\n", name,
-                a.events.size(), a.bodies, a.energyGrowth, static_cast<unsigned long long>(a.stats.engineCalls),
-                static_cast<unsigned long long>(a.stats.engineFailures));
+    std::printf(
+        "%s: %zu events, %d bodies at the end, energy growth %.2e, engine calls %llu, failures %llu\n", name,
+        a.events.size(), a.bodies, a.energyGrowth, static_cast<unsigned long long>(a.stats.engineCalls),
+        static_cast<unsigned long long>(a.stats.engineFailures));
     if (!a.events.empty()) {
         const Outcome b = simulate(c);
         // A case known to diverge after `deterministicEvents` events (the chain) may end with
@@ -299,9 +305,11 @@ Outcome expectStable(const Case& c, const char* name, size_t deterministicEvents
         if (a.events.size() <= deterministicEvents) {
             EXPECT_EQ(a.events.size(), b.events.size()) << name;
         }
-        EXPECT_GE(std::min(a.events.size(), b.events.size()), std::min(a.events.size(), deterministicEvents)) << name;
+        EXPECT_GE(std::min(a.events.size(), b.events.size()), std::min(a.events.size(), deterministicEvents))
+            << name;
         for (size_t i = 0; i < std::min({a.events.size(), b.events.size(), deterministicEvents}); ++i)
-            EXPECT_EQ(a.events[i].volumes, b.events[i].volumes) << name << " event " << i << " at t = " << a.events[i].time;
+            EXPECT_EQ(a.events[i].volumes, b.events[i].volumes)
+                << name << " event " << i << " at t = " << a.events[i].time;
         if (a.events.size() > deterministicEvents) return a;
         EXPECT_EQ(a.fragmentPoses.size(), b.fragmentPoses.size()) << name;
         if (a.fragmentPoses.size() == b.fragmentPoses.size()) {

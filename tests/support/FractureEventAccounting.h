@@ -25,13 +25,13 @@ namespace btfracture::test {
 
 struct FractureEventCheck {
     std::string body;
-    double time = 0.0;                // event time [s] (internal step x step length)
+    double time = 0.0;  // event time [s] (internal step x step length)
     int fragments = 0;
-    int refractureDepth = 0;          // of the parent
-    double massRatio = 0.0;           // sum of fragment masses / parent mass
-    double volumeRatio = 0.0;         // sum of fragment volumes / parent volume
-    double momentumError = 0.0;       // relative, see above
-    std::vector<double> volumes;      // fragment volumes [m^3], in spawn order
+    int refractureDepth = 0;      // of the parent
+    double massRatio = 0.0;       // sum of fragment masses / parent mass
+    double volumeRatio = 0.0;     // sum of fragment volumes / parent volume
+    double momentumError = 0.0;   // relative, see above
+    std::vector<double> volumes;  // fragment volumes [m^3], in spawn order
 };
 
 class FractureEventAccounting : public FractureListener {
@@ -64,8 +64,9 @@ public:
         }
         const Eigen::Vector3d expected = mass * v + w.cross(moment);
         const double scale = M * (v.norm() + w.norm() * std::cbrt(parent.volume()));
-        e.momentumError = std::max(0.0, (momentum - expected).norm() - w.norm() * mass * info.maxSeparationPush) /
-                          std::max(1e-12, scale);
+        e.momentumError =
+            std::max(0.0, (momentum - expected).norm() - w.norm() * mass * info.maxSeparationPush) /
+            std::max(1e-12, scale);
         e.massRatio = mass / M;
         e.volumeRatio = volume / parent.volume();
         events.push_back(std::move(e));
