@@ -38,7 +38,7 @@ bench-accuracy: build
 
 test-sanitize: deps
 	@cmake -S . -B $(BUILD)-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBTFRACTURE_SANITIZE=ON \
-	  -DBTFRACTURE_BUILD_BENCH=OFF > /dev/null
+	  -DBTFRACTURE_BUILD_BENCH=OFF $(CMAKE_ARGS) > /dev/null
 	@cmake --build $(BUILD)-sanitize -j $(JOBS)
 	ctest --test-dir $(BUILD)-sanitize --output-on-failure -j $(JOBS)
 

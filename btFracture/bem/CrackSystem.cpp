@@ -3,6 +3,7 @@
 #include <btFracture/bem/BoundaryOperators.h>
 #include <btFracture/bem/GalerkinBlocks.h>
 #include <btFracture/core/Error.h>
+#include <btFracture/core/ParallelProduct.h>
 
 #include <Eigen/LU>
 
@@ -95,7 +96,7 @@ int CrackSystem::update() {
     C_.conservativeResize(Eigen::NoChange, new3);
     C_.rightCols(new3 - old3) = coupling.C;
     H_.conservativeResize(Eigen::NoChange, new3);
-    H_.rightCols(new3 - old3) = solver_.solveRegularised(solver_.stiffness().transpose() * coupling.C);
+    H_.rightCols(new3 - old3) = solver_.solveRegularised(transposedProduct(solver_.stiffness(), coupling.C));
     G_.conservativeResize(new3, Eigen::NoChange);
     G_.bottomRows(new3 - old3) = coupling.G;
 
@@ -152,7 +153,7 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {
         s.openings.resize(0);
         return s;
     }
-    const Eigen::MatrixXd schur = D_ - C_.transpose() * H_;
+    const Eigen::MatrixXd schur = D_ - transposedProduct(C_, H_);
     const Eigen::VectorXd rhs = G_ * q - C_.transpose() * b;
     const Eigen::PartialPivLU<Eigen::MatrixXd> lu(schur);
     s.openings = lu.solve(rhs);

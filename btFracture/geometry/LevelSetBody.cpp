@@ -17,7 +17,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -49,16 +48,6 @@ double surfaceArea(const TriangleMesh& mesh) {
                           .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
                           .norm();
     return area;
-}
-
-// Runs f on one thread. OpenVDB's meshToVolume widens its narrow band in parallel, and a task
-// reads neighbouring leaves that other tasks are still updating, so a voxel's closest triangle
-// (and our exact distance from it) could depend on thread timing: fragment volumes then differed
-// in the last bits between identical runs under load. On one thread the order is fixed.
-template <typename F>
-auto serially(F&& f) {
-    tbb::task_arena arena(1);
-    return arena.execute(std::forward<F>(f));
 }
 
 // Triangles given to OpenVDB in index space (double precision, no copy of the mesh).
@@ -404,7 +393,7 @@ TriangleMesh meshFromGrid(const FloatGrid& phi, const std::string& name, double 
     std::vector<openvdb::Vec3s> points;
     std::vector<openvdb::Vec3I> triangles;
     std::vector<openvdb::Vec4I> quads;
-    openvdb::tools::volumeToMesh(phi, points, triangles, quads, isovalue, adaptivity);
+    serially([&] { openvdb::tools::volumeToMesh(phi, points, triangles, quads, isovalue, adaptivity); });
 
     TriangleMesh mesh;
     mesh.name = name;
@@ -470,7 +459,7 @@ void LevelSetBody::Impl::rebuildObject() {
     boundingDiagonal =
         box.empty() ? 0.0 : (voxelCentre(box.max(), voxelSize) - voxelCentre(box.min(), voxelSize)).norm();
     if (crack && crack->activeVoxelCount() > 0) {
-        object = openvdb::tools::csgDifferenceCopy(*solid, *crack);
+        object = serially([&] { return openvdb::tools::csgDifferenceCopy(*solid, *crack); });
     } else {
         object = solid->deepCopy();
     }
@@ -763,7 +752,7 @@ void LevelSetBody::cutAlongSurface(const TriangleMesh& sheet, int crackId) {
             triangleAcc.setValueOn(ijk, base + nearestAcc.getValue(ijk));
         }
     }
-    openvdb::tools::csgDifference(*b.object, *slab);
+    serially([&] { openvdb::tools::csgDifference(*b.object, *slab); });
     logf(LogLevel::Debug, source, ": crack ", crackId, " cut with ", kept.triangles.size(), " triangles, ",
          slabVoxels, " slab voxels");
 }

@@ -91,10 +91,11 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
 
     // 1. Connected components of the object's interior (6-connected voxels), in a
     //    deterministic order: most voxels first, then lowest first voxel.
-    BoolGrid::Ptr interior = openvdb::tools::sdfInteriorMask(*body.object);
     std::vector<BoolGrid::Ptr> masks;
-    openvdb::tools::extractActiveVoxelSegmentMasks(*interior, masks);
-    interior.reset();
+    serially([&] {
+        BoolGrid::Ptr interior = openvdb::tools::sdfInteriorMask(*body.object);
+        openvdb::tools::extractActiveVoxelSegmentMasks(*interior, masks);
+    });
     std::vector<Component> components;
     for (auto& mask : masks) {
         Component c;
@@ -171,8 +172,11 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
     for (int k = 0; k < static_cast<int>(components.size()); ++k) {
         // Narrow band around the component: dilate by the band width plus one voxel.
         openvdb::BoolTree band(components[k].mask->tree());
-        openvdb::tools::dilateActiveValues(band, static_cast<int>(kHalfWidthVoxels) + 1,
-                                           openvdb::tools::NN_FACE_EDGE_VERTEX, openvdb::tools::IGNORE_TILES);
+        serially([&] {
+            openvdb::tools::dilateActiveValues(band, static_cast<int>(kHalfWidthVoxels) + 1,
+                                               openvdb::tools::NN_FACE_EDGE_VERTEX,
+                                               openvdb::tools::IGNORE_TILES);
+        });
         FloatGrid::Ptr phi = makeLevelSet(dx);
         auto phiAcc = phi->getAccessor();
         auto assign = [&](const Coord& ijk, float value) {
@@ -211,7 +215,7 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
                 assign(v.ijk, std::max(solid, static_cast<float>(side)));
             }
         }
-        openvdb::tools::pruneLevelSet(phi->tree());
+        serially([&] { openvdb::tools::pruneLevelSet(phi->tree()); });
 
         Fragment f;
         f.name = body.name + "/" + std::to_string(fragments.size());

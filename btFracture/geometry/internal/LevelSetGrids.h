@@ -7,10 +7,12 @@
 #include <btFracture/geometry/LevelSetBody.h>
 
 #include <openvdb/openvdb.h>
+#include <tbb/task_arena.h>
 
 #include <Eigen/Core>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace btfracture {
@@ -19,6 +21,17 @@ namespace levelset {
 using openvdb::Coord;
 using openvdb::FloatGrid;
 using openvdb::Int32Grid;
+
+// Runs f on one thread; every OpenVDB tool call goes through here. meshToVolume widens its band
+// in parallel with tasks reading leaves that others are still updating, so a voxel's closest
+// triangle depended on thread timing; with only meshToVolume serial, the refracture chain's
+// sixth event still differed between two runs in one process (stability label), so all tools
+// run serially. Our own loops over leaves stay parallel: one task per leaf, sums in leaf order.
+template <typename F>
+auto serially(F&& f) {
+    tbb::task_arena arena(1);
+    return arena.execute(std::forward<F>(f));
+}
 
 constexpr float kHalfWidthVoxels = 3.0f;            // narrow band, each side of the surface
 constexpr double kCrackHalfThicknessVoxels = 0.85;  // slab = |distance to sheet| < this
