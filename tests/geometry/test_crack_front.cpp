@@ -254,9 +254,10 @@ TEST(CrackFront, FrontsExtendedTogetherMeetInsteadOfCrossing) {
     const FrontAdvanceResult r = t.fronts.extend(stopped, 10.0 * v, unbounded());
     double reachA, reachB, farA;
     t.reach(reachA, reachB, farA);
-    std::printf("fronts meet: A reaches x = %+.2f voxels, B reaches x = %+.2f voxels; A's far side at %.1f "
-                "voxels; %d markers stopped at the other sheet\n",
-                reachA / v, reachB / v, farA / v, r.metSheet);
+    std::printf(
+        "fronts meet: A reaches x = %+.2f voxels, B reaches x = %+.2f voxels; A's far side at %.1f "
+        "voxels; %d markers stopped at the other sheet\n",
+        reachA / v, reachB / v, farA / v, r.metSheet);
     EXPECT_GT(r.metSheet, 0);
     EXPECT_LT(reachA, 1.5 * v);
     EXPECT_GT(reachB, -1.5 * v);
