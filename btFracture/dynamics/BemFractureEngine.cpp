@@ -412,6 +412,12 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
             // The state moves on with this fragment: its BEM, cracks and its own level set.
             s.bodyToState = parentToState * childToParentBody;
             s.levelSet = f.levelSet;
+            if (s.fronts) {
+                const int freed = s.fronts->freeOutside(frontQueries(*s.levelSet));
+                if (freed > 0)
+                    logf(LogLevel::Info, body.name(), ": ", freed,
+                         " crack front markers outside the kept fragment follow their coarse front freely");
+            }
             s.bemSource = TriangleMesh();  // the solver is kept; a rebuild would start from the level set
         } else if (spec.cls == FragmentSpec::Class::Breakable) {
             auto carried = std::make_unique<BemFractureState>();

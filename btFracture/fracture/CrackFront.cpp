@@ -196,6 +196,18 @@ bool CrackFronts::nearOtherSheet(int sheet, const Eigen::Vector3d& p) const {
     return false;
 }
 
+int CrackFronts::freeOutside(const FrontQueries& queries) {
+    int freed = 0;
+    for (auto& [sheet, chains] : sheets_)
+        for (MarkerChain& chain : chains)
+            for (FrontMarker& m : chain.markers)
+                if (!m.arrested && !m.free && !queries.insideBody(m.position)) {
+                    m.free = true;
+                    ++freed;
+                }
+    return freed;
+}
+
 std::map<int, TriangleMesh> CrackFronts::takeSwept() {
     std::map<int, TriangleMesh> out;
     out.swap(swept_);

@@ -97,6 +97,11 @@ public:
     FrontAdvanceResult extend(const std::map<int, std::set<int>>& stoppedNodes, double distance,
                               const FrontQueries& queries);
 
+    // After the body lost material (§5.3: a fragment keeps the parent's fronts), active markers
+    // now outside it follow the coarse front freely until they enter the body again, like
+    // markers made outside. Returns how many were freed.
+    int freeOutside(const FrontQueries& queries);
+
     // Triangles swept since the last call, per sheet (triangle soups), and forgets them.
     std::map<int, TriangleMesh> takeSwept();
     int sweptTriangles() const;

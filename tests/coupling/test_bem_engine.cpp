@@ -18,13 +18,15 @@ namespace {
 struct EventProbe : FractureListener {
     explicit EventProbe(btDiscreteDynamicsWorld& w) : world(w) {}
     void onFractureEvent(btFractureRigidBody&, const std::vector<btFractureRigidBody*>& fragments,
-                         const FractureEventInfo&) override {
+                         const FractureEventInfo& info) override {
         ++events;
         pieces += static_cast<int>(fragments.size());
         atSwap = probe(world);
+        timings = info.engineTimings;
     }
     btDiscreteDynamicsWorld& world;
     int events = 0, pieces = 0;
+    EngineTimings timings;  // of the last event
     WorldProbe atSwap;
 };
 
@@ -89,6 +91,7 @@ TEST(BemEngine, VoxelFrontsSplitTheSlabLikeTheCoarseSheetDeterministically) {
         int cuts = 0, events = 0, pieces = 0;
         std::vector<int> ids;
         double volumeRatio = 0.0, massError = 0.0;
+        EngineTimings timings;
         std::vector<btTransform> poses;
     };
     auto run = [](bool voxelFronts) {
@@ -115,6 +118,7 @@ TEST(BemEngine, VoxelFrontsSplitTheSlabLikeTheCoarseSheetDeterministically) {
         }
         cut.events = listener.events;
         cut.pieces = listener.pieces;
+        cut.timings = listener.timings;
         cut.massError = std::abs(listener.atSwap.mass - before.mass) / slabMass;
         cut.poses = scene.fragmentPoses();
         return cut;
@@ -124,6 +128,8 @@ TEST(BemEngine, VoxelFrontsSplitTheSlabLikeTheCoarseSheetDeterministically) {
         "voxel fronts: %d fragments (coarse sheet: %d), %zu cracks, mass change %.3f %% (coarse %.3f "
         "%%), level-set volume ratio %.9f\n",
         a.pieces, coarse.pieces, a.ids.size(), 100 * a.massError, 100 * coarse.massError, a.volumeRatio);
+    std::printf("event time: crack growth %.2f s, cut and fragments %.2f s (coarse sheet: %.2f s, %.2f s)\n",
+                a.timings.fracture, a.timings.geometry, coarse.timings.fracture, coarse.timings.geometry);
     ASSERT_EQ(a.events, 1);
     ASSERT_EQ(coarse.events, 1);
     EXPECT_GE(a.pieces, 2);

@@ -266,6 +266,45 @@ TEST(CrackFront, FrontsExtendedTogetherMeetInsteadOfCrossing) {
     EXPECT_LT(farA, -45.0 * v);  // -20 - 16 - 10 voxels, to within a voxel of resampling
 }
 
+// A body that lost its x > 0 half after a penny front grew to 8 voxels (§5.3: the kept
+// fragment): the markers now outside are freed and follow the coarse front 5 voxels on, while
+// without freeOutside() they stop where they are on their next move.
+TEST(CrackFront, MarkersOutsideAKeptFragmentFollowTheCoarseFront) {
+    const double voxel = 1e-3;
+    const Eigen::Vector3d u = Eigen::Vector3d::UnitX(), v = Eigen::Vector3d::UnitY();
+    bool halved = false;
+    const FrontQueries body{[&](const Eigen::Vector3d& p) { return !halved || p.x() < 0.0; },
+                            [](const Eigen::Vector3d&) { return -1; }};
+    auto run = [&](bool release, int& freed, double& reach) {
+        halved = false;
+        CrackFronts fronts(voxel);
+        CoarseFront coarse =
+            circleFront(Eigen::Vector3d::Zero(), u, v, 3.0 * voxel, 12, [&](double) { return 1.0 * voxel; });
+        fronts.addSheet(0, coarse, body);
+        for (int step = 0; step < 5; ++step) {  // radius 3 -> 8 voxels
+            fronts.advance({{0, coarse}}, body);
+            moveCoarse(coarse);
+        }
+        halved = true;
+        freed = release ? fronts.freeOutside(body) : 0;
+        for (int step = 0; step < 5; ++step) {  // radius 8 -> 13 voxels
+            fronts.advance({{0, coarse}}, body);
+            moveCoarse(coarse);
+        }
+        reach = 0.0;
+        for (const FrontMarker& m : fronts.chains(0).front().markers) reach = std::max(reach, m.position.x());
+    };
+    int freed = 0, none = 0;
+    double reachFreed = 0.0, reachStopped = 0.0;
+    run(true, freed, reachFreed);
+    run(false, none, reachStopped);
+    std::printf("kept fragment: %d markers freed, reach x = %.2f voxels (%.2f without freeing)\n", freed,
+                reachFreed / voxel, reachStopped / voxel);
+    EXPECT_GT(freed, 10);                                 // about half of the ~50 markers at 8 voxels
+    EXPECT_NEAR(reachFreed, 13.0 * voxel, 0.5 * voxel);   // followed the coarse front
+    EXPECT_NEAR(reachStopped, 8.0 * voxel, 0.5 * voxel);  // stopped where the body left them
+}
+
 // The same marker run twice gives bit-identical markers and swept surfaces.
 TEST(CrackFront, Deterministic) {
     SpacingRange r1, r2;
