@@ -12,8 +12,8 @@
 // and in cracks cut earlier, stop the coarse nodes whose markers all stopped (after that
 // step's move), are carried on to the surface or another crack where the coarse front
 // stopped, and the surface they swept is cut instead. Still opt-in: the coupling glass slab
-// splits like the coarse cut (4 fragments each), but in falling_boxes, the curved-fragment and
-// refracture-chain cases the marker cut breaks less than the coarse cut (README).
+// splits like the coarse cut (4 fragments each), but in falling_boxes and the curved-fragment
+// refracture case the marker cut breaks less than the coarse cut (README).
 #include <btFracture/core/FractureSettings.h>
 #include <btFracture/dynamics/FractureEngine.h>
 #include <btFracture/geometry/Fragment.h>
