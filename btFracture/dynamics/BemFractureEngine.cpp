@@ -43,7 +43,16 @@ public:
     std::unique_ptr<FractureSolver> fracture;    // borrows *solver
     std::map<int, int> cutTriangles;             // crack sheet -> triangles already cut (no markers)
     std::unique_ptr<CrackFronts> fronts;         // voxel-resolution fronts (state frame)
+    FrontAdvanceResult frontTally;               // marker arrests since the last cut (logged there)
 };
+
+void addTally(FrontAdvanceResult& into, const FrontAdvanceResult& r) {
+    into.substeps += r.substeps;
+    into.arrestedMarkers += r.arrestedMarkers;
+    into.leftBody += r.leftBody;
+    into.metCrack += r.metCrack;
+    into.metSheet += r.metSheet;
+}
 
 FrontQueries frontQueries(const LevelSetBody& levelSet) {
     return {[&levelSet](const Eigen::Vector3d& p) { return levelSet.isInsideSolid(p); },
@@ -90,6 +99,7 @@ std::vector<int> advanceMarkers(BemFractureState& s, const CrackMesh& cracks,
         s.fronts->addSheet(sheet, front, queries);
     }
     const FrontAdvanceResult r = s.fronts->advance(fronts, queries);
+    addTally(s.frontTally, r);
     return std::vector<int>(r.arrestedCoarseNodes.begin(), r.arrestedCoarseNodes.end());
 }
 
@@ -204,7 +214,21 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
         for (const auto& e : cracks.frontEdges())
             for (const int node : {e.a, e.b})
                 if (s.fracture->isArrested(node)) stopped[cracks.sheetOf(e.triangle)].insert(node);
-        s.fronts->extend(stopped, extension, frontQueries(*s.levelSet));
+        addTally(s.frontTally, s.fronts->extend(stopped, extension, frontQueries(*s.levelSet)));
+        int markers = 0, active = 0;
+        for (const int sheet : s.fronts->sheets())
+            for (const MarkerChain& chain : s.fronts->chains(sheet))
+                for (const FrontMarker& m : chain.markers) {
+                    ++markers;
+                    active += m.arrested ? 0 : 1;
+                }
+        const FrontAdvanceResult& t = s.frontTally;
+        logf(LogLevel::Info, s.levelSet->name(), ": crack fronts of ", s.fronts->sheets().size(), " sheets, ",
+             markers, " markers (", active, " active), ", t.substeps, " sub-steps; arrested ",
+             t.arrestedMarkers, " (", t.leftBody, " at the surface, ", t.metCrack, " in cut cracks, ",
+             t.metSheet, " at other sheets, the rest at the end of their extension), ",
+             s.fronts->sweptTriangles(), " swept triangles to cut");
+        s.frontTally = FrontAdvanceResult();
         out = s.fronts->takeSwept();
     }
     auto vertex = [&](TriangleMesh& m, const Eigen::Vector3d& p) {
@@ -388,6 +412,12 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
             // The state moves on with this fragment: its BEM, cracks and its own level set.
             s.bodyToState = parentToState * childToParentBody;
             s.levelSet = f.levelSet;
+            if (s.fronts) {
+                const int freed = s.fronts->freeOutside(frontQueries(*s.levelSet));
+                if (freed > 0)
+                    logf(LogLevel::Info, body.name(), ": ", freed,
+                         " crack front markers outside the kept fragment follow their coarse front freely");
+            }
             s.bemSource = TriangleMesh();  // the solver is kept; a rebuild would start from the level set
         } else if (spec.cls == FragmentSpec::Class::Breakable) {
             auto carried = std::make_unique<BemFractureState>();

@@ -7,11 +7,13 @@
 // keeps the parent's whole state, BEM included.
 //
 // Cutting: by default the coarse BEM crack sheet is cut into the level set (extended to the
-// surface where its front stopped). With voxelFronts, voxel-resolution markers (CrackFront.h)
-// follow the coarse front in every crack step, stop at the surface and at other cracks, stop
-// the coarse nodes whose markers all stopped, and the surface they swept is cut instead.
-// Limitation: voxelFronts is off by default: in the coupling glass-slab scene the marker cut
-// alone leaves the slab in one piece plus dust (the coarse cut gives 4 fragments); see README.
+// surface where its front stopped). With voxelFronts (issue 5, §3), voxel-resolution markers
+// (CrackFront.h) follow the coarse front in every crack step, stop at the level set's surface
+// and in cracks cut earlier, stop the coarse nodes whose markers all stopped (after that
+// step's move), are carried on to the surface or another crack where the coarse front
+// stopped, and the surface they swept is cut instead. Still opt-in: the coupling glass slab
+// splits like the coarse cut (4 fragments each), but in falling_boxes and the curved-fragment
+// refracture case the marker cut breaks less than the coarse cut (README).
 #include <btFracture/core/FractureSettings.h>
 #include <btFracture/dynamics/FractureEngine.h>
 #include <btFracture/geometry/Fragment.h>
@@ -29,7 +31,7 @@ struct BemFractureEngineSettings {
     // Volume classes; collisionTriangles comes from each body's collisionTriangleTarget.
     FragmentSettings fragments;
     // Cut the surface swept by voxel-resolution crack fronts (issue 5) instead of the coarse
-    // crack sheet; experimental, see the header comment.
+    // crack sheet; opt-in, see the header comment.
     bool voxelFronts = false;
 };
 

@@ -196,6 +196,18 @@ bool CrackFronts::nearOtherSheet(int sheet, const Eigen::Vector3d& p) const {
     return false;
 }
 
+int CrackFronts::freeOutside(const FrontQueries& queries) {
+    int freed = 0;
+    for (auto& [sheet, chains] : sheets_)
+        for (MarkerChain& chain : chains)
+            for (FrontMarker& m : chain.markers)
+                if (!m.arrested && !m.free && !queries.insideBody(m.position)) {
+                    m.free = true;
+                    ++freed;
+                }
+    return freed;
+}
+
 std::map<int, TriangleMesh> CrackFronts::takeSwept() {
     std::map<int, TriangleMesh> out;
     out.swap(swept_);
@@ -261,7 +273,7 @@ FrontAdvanceResult CrackFronts::advance(const std::map<int, CoarseFront>& fronts
             sheetSteps.push_back(std::move(smooth));
         }
     }
-    FrontAdvanceResult result = sweep(steps, queries);
+    FrontAdvanceResult result = sweep(steps, queries, false);
     // Arrest feedback: a coarse node whose markers were moving and all stopped stops too (one
     // whose markers all started outside, e.g. on a seed poking through the surface, moves on).
     for (const auto& [sheet, nodes] : moving) {
@@ -297,7 +309,7 @@ FrontAdvanceResult CrackFronts::extend(const std::map<int, std::set<int>>& stopp
             steps[sheet].push_back(std::move(s));
         }
     }
-    FrontAdvanceResult result = sweep(steps, queries);
+    FrontAdvanceResult result = sweep(steps, queries, true);
     // Markers that found no obstacle within `distance` stop too: their coarse node has.
     for (const auto& [sheet, nodes] : stoppedNodes) {
         const auto found = sheets_.find(sheet);
@@ -312,7 +324,8 @@ FrontAdvanceResult CrackFronts::extend(const std::map<int, std::set<int>>& stopp
     return result;
 }
 
-FrontAdvanceResult CrackFronts::sweep(std::map<int, std::vector<Steps>>& steps, const FrontQueries& queries) {
+FrontAdvanceResult CrackFronts::sweep(std::map<int, std::vector<Steps>>& steps, const FrontQueries& queries,
+                                      bool stopAtSheets) {
     FrontAdvanceResult result;
     double longest = 0.0;
     for (const auto& [sheet, chains] : steps)
@@ -328,8 +341,8 @@ FrontAdvanceResult CrackFronts::sweep(std::map<int, std::vector<Steps>>& steps, 
     result.substeps = substeps;
     // Every chain edge sweeps one strip per advance (each marker moves on a straight line within
     // it): its start is kept per edge and the strip is emitted when the edge ends (split,
-    // collapse) or the advance does. Fronts of several sheets also see each other's sub-step
-    // strips at once (kept apart, dropped at the end).
+    // collapse) or the advance does. With stopAtSheets, fronts of several sheets also see each
+    // other's sub-step strips at once (kept apart, dropped at the end).
     std::map<int, std::vector<Strips>> strips;
     for (const auto& [sheet, sheetSteps] : steps)
         for (const MarkerChain& chain : sheets_.at(sheet)) {
@@ -338,7 +351,7 @@ FrontAdvanceResult CrackFronts::sweep(std::map<int, std::vector<Steps>>& steps, 
                 from[i] = {chain.markers[i].position, chain.markers[(i + 1) % from.size()].position};
             strips[sheet].push_back(std::move(from));
         }
-    const bool several = steps.size() > 1;
+    const bool several = stopAtSheets && steps.size() > 1;
     for (int k = 0; k < substeps; ++k) {
         std::vector<std::pair<int, std::array<Eigen::Vector3d, 3>>> fresh;
         for (auto& [sheet, sheetSteps] : steps) {
@@ -363,6 +376,7 @@ FrontAdvanceResult CrackFronts::sweep(std::map<int, std::vector<Steps>>& steps, 
                         if (!m.free) {
                             q = p;
                             m.arrested = true;
+                            ++result.leftBody;
                         }
                     } else if (!inside) {
                         // Bisect for the surface, stop just past it.
@@ -373,11 +387,17 @@ FrontAdvanceResult CrackFronts::sweep(std::map<int, std::vector<Steps>>& steps, 
                         }
                         q = p + hi * (q - p) + kPastSurface * spacing_ * dir;
                         m.arrested = true;
+                        ++result.leftBody;
                     } else {
                         m.free = false;
                         const int crack = queries.crackAt(q);
-                        if ((crack >= 0 && crack != sheet && crack != m.home) || nearOtherSheet(sheet, q))
+                        if (crack >= 0 && crack != sheet && crack != m.home) {
                             m.arrested = true;
+                            ++result.metCrack;
+                        } else if (stopAtSheets && nearOtherSheet(sheet, q)) {
+                            m.arrested = true;
+                            ++result.metSheet;
+                        }
                     }
                     if (m.arrested) ++result.arrestedMarkers;
                     m.position = q;

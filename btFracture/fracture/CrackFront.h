@@ -5,10 +5,15 @@
 // interpolated along the coarse front edge nearest to it, in sub-steps of at most half a
 // voxel; markers are inserted and removed to keep neighbours 0.5 to 2 spacings apart, the
 // per-marker steps are lightly smoothed, and a marker stops for good when it leaves the body
-// or enters another crack (a marker outside the body since it was made, on a seed poking
-// through the surface, follows the coarse front freely until it enters the body). The swept surface between
-// successive polylines is kept as triangles for the caller to cut into the level set
-// (LevelSetBody::cutAlongSurface).
+// or enters a crack already cut into it (a marker outside the body since it was made, on a seed
+// poking through the surface, follows the coarse front freely until it enters the body).
+// Sheets growing together (one event) pass through each other as the coarse BEM sheets do
+// (CrackGrowth.h: only a coarse node crossing a coarse triangle stops): their markers stop at
+// another sheet's swept surface only when extend() carries a stopped coarse front on to its
+// obstacle. Stopping them at every close pass turned the coarse sheets' crossings into
+// T-junctions that leave the glass slab of tests/coupling in one piece (README, issue 5). The
+// swept surface between successive polylines is kept as triangles for the caller to cut into
+// the level set (LevelSetBody::cutAlongSurface).
 //
 // No OpenVDB, no Bullet: the body is seen through FrontQueries. Units: metres; the frame is the
 // caller's (the level set's frame in the engine).
@@ -55,7 +60,10 @@ struct MarkerChain {
 
 struct FrontAdvanceResult {
     int substeps = 0;
-    int arrestedMarkers = 0;            // newly arrested
+    int arrestedMarkers = 0;            // newly arrested, of which:
+    int leftBody = 0;                   //   at the body's surface
+    int metCrack = 0;                   //   in a crack already cut (FrontQueries::crackAt)
+    int metSheet = 0;                   //   at another sheet's swept surface (extend() only)
     std::set<int> arrestedCoarseNodes;  // coarse nodes that moved but whose markers all stopped
 };
 
@@ -71,20 +79,28 @@ public:
     // btfracture::Error if the sheet already has markers or an edge's node has no position.
     void addSheet(int sheet, const CoarseFront& front, const FrontQueries& queries);
     // Adds triangles (e.g. a new sheet's coarse seed) to the swept surface of `sheet`: they are
-    // returned by takeSwept() and stop other sheets' markers like swept triangles do.
+    // returned by takeSwept() and stop other sheets' markers in extend() like swept triangles do.
     void addSurface(int sheet, const TriangleMesh& triangles);
     const std::vector<MarkerChain>& chains(int sheet) const;
     std::vector<int> sheets() const;
 
     // One coarse step for every sheet in `fronts` (sheets without markers are ignored): each marker
-    // moves by the advance interpolated along its sheet's nearest coarse front edge.
+    // moves by the advance interpolated along its sheet's nearest coarse front edge, stopping at
+    // the surface and in cut cracks, not at other sheets' swept surfaces.
     FrontAdvanceResult advance(const std::map<int, CoarseFront>& fronts, const FrontQueries& queries);
     // Moves the still active markers whose coarse node is in `stoppedNodes[sheet]` up to
     // `distance` [m] further along their last direction, then stops them for good (the coarse
     // front stopped at an obstacle of the coarse BEM mesh, which can lie short of the level
-    // set's: carry the cut up to the real one).
+    // set's: carry the cut up to the real one). Here markers also stop at other sheets' swept
+    // surfaces (within 0.85 spacing, the slab half-width), fronts extended together at each
+    // other's sub-step strips.
     FrontAdvanceResult extend(const std::map<int, std::set<int>>& stoppedNodes, double distance,
                               const FrontQueries& queries);
+
+    // After the body lost material (§5.3: a fragment keeps the parent's fronts), active markers
+    // now outside it follow the coarse front freely until they enter the body again, like
+    // markers made outside. Returns how many were freed.
+    int freeOutside(const FrontQueries& queries);
 
     // Triangles swept since the last call, per sheet (triangle soups), and forgets them.
     std::map<int, TriangleMesh> takeSwept();
@@ -95,7 +111,7 @@ private:
     using Strip = std::pair<Eigen::Vector3d, Eigen::Vector3d>;  // where a chain edge's strip began
     using Strips = std::vector<Strip>;
     FrontAdvanceResult sweep(std::map<int, std::vector<std::vector<Eigen::Vector3d>>>& steps,
-                             const FrontQueries& queries);
+                             const FrontQueries& queries, bool stopAtSheets);
     void resample(int sheet, MarkerChain& chain, std::vector<Eigen::Vector3d>& steps, Strips& from);
     void emitStrip(int sheet, const MarkerChain& chain, const Strips& from, std::size_t edge);
     bool nearOtherSheet(int sheet, const Eigen::Vector3d& p) const;

@@ -76,6 +76,7 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
         result.advanced[node] = (target - p).norm();
     }
     result.advancedNodes = static_cast<int>(moved.size());
+    result.newNode = moved;
     // A strip per front edge a -> b (interior on its left): the new triangles sit on its right,
     // and new front edges longer than maxEdge are split.
     const auto edges = cracks.frontEdges();

@@ -18,6 +18,7 @@ struct GrowthResult {
     int newTriangles = 0;
     int arrestedNodes = 0;           // newly arrested in this step
     std::map<int, double> advanced;  // old front node -> distance it moved [m]
+    std::map<int, int> newNode;      // old front node -> the node it moved to
 };
 
 // `advances[node]` holds the motion of each front node (distance 0 = stays). `arrested` (per

@@ -129,16 +129,22 @@ FractureStepRecord FractureSolver::step(int index) {
             advanceOf(f, field_.fractureToughness(f.position), m.compressiveFactor(), m.poissonRatio(),
                       settings_.frontEdgeLength * meanSize_, settings_.minimumSpeed);
     }
-    int stopped = 0;
+    // Nodes the observer stops still make this step's move (their markers stopped somewhere
+    // along it) and stop where it ends.
+    std::vector<int> stopAfter;
     if (observer_)
-        for (const int node : observer_(cracks_, advances)) {
-            if (node < 0 || node >= cracks_.nodeCount() || arrested_[node]) continue;
-            arrested_[node] = 1;
-            advances.erase(node);
-            ++stopped;
-        }
+        for (const int node : observer_(cracks_, advances))
+            if (node >= 0 && node < cracks_.nodeCount() && !arrested_[node]) stopAfter.push_back(node);
     const GrowthResult growth =
         growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * meanSize_, arrested_);
+    int stopped = 0;
+    for (const int node : stopAfter) {
+        const auto moved = growth.newNode.find(node);
+        const int last = moved == growth.newNode.end() ? node : moved->second;
+        if (arrested_[last]) continue;  // growth stopped it already
+        arrested_[last] = 1;
+        ++stopped;
+    }
     record.advancedNodes = growth.advancedNodes;
     record.arrestedNodes = growth.arrestedNodes + stopped;
     if (growth.advancedNodes > 0) updateFrontState(sifs, growth.advanced);

@@ -64,8 +64,8 @@ public:
     FractureStepRecord step(int index);  // one propagation step
 
     // Called in every step with the front advances (BEM frame) before the sheets grow; returns
-    // front nodes that must stop for good (the high-resolution front's arrest feedback,
-    // CrackFront.h). Unset: no observer.
+    // front nodes that stop for good once this step's move is made (the high-resolution front's
+    // arrest feedback, CrackFront.h: its markers stopped during the move). Unset: no observer.
     using GrowthObserver =
         std::function<std::vector<int>(const CrackMesh&, const std::map<int, FrontAdvance>&)>;
     void setGrowthObserver(GrowthObserver observer) { observer_ = std::move(observer); }

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <set>
 
 namespace btfracture {
 namespace {
@@ -184,44 +186,123 @@ TEST(CrackFront, FrontReachingTheSurfaceArrestsThere) {
 // Two coplanar penny fronts growing toward each other (centres 40 voxels apart) stop where they
 // meet: no marker or swept triangle of either gets more than 1.5 voxels past the midplane,
 // while their far sides keep growing.
-TEST(CrackFront, TwoFrontsMeetingStopInsteadOfCrossing) {
+// Two coplanar penny fronts 40 voxels apart, growing 1.3 voxels per step toward each other.
+struct TwoFronts {
+    static constexpr double voxel = 1e-3;
+    CrackFronts fronts{voxel};
+    CoarseFront a, b;
+    TwoFronts() {
+        const Eigen::Vector3d u = Eigen::Vector3d::UnitX(), v = Eigen::Vector3d::UnitY();
+        const auto speed = [](double) { return 1.3 * voxel; };
+        a = circleFront(-20.0 * voxel * u, u, v, 3.0 * voxel, 12, speed, 0);
+        b = circleFront(20.0 * voxel * u, u, v, 3.0 * voxel, 12, speed, 100);
+        fronts.addSheet(1, a, unbounded());
+        fronts.addSheet(2, b, unbounded());
+    }
+    void advance(int steps) {
+        for (int step = 0; step < steps; ++step) {
+            const FrontAdvanceResult r = fronts.advance({{1, a}, {2, b}}, unbounded());
+            EXPECT_EQ(r.metSheet, 0);
+            moveCoarse(a);
+            moveCoarse(b);
+        }
+    }
+    // Largest x any marker or swept vertex of A reached, smallest of B, smallest of A (far side).
+    void reach(double& reachA, double& reachB, double& farA) {
+        reachA = -1e300, reachB = 1e300, farA = 0.0;
+        for (const auto& [sheet, mesh] : fronts.takeSwept())
+            for (const auto& p : mesh.vertices) {
+                if (sheet == 1)
+                    reachA = std::max(reachA, p.x());
+                else
+                    reachB = std::min(reachB, p.x());
+            }
+        for (const FrontMarker& m : fronts.chains(1).front().markers) {
+            reachA = std::max(reachA, m.position.x());
+            farA = std::min(farA, m.position.x());
+        }
+        for (const FrontMarker& m : fronts.chains(2).front().markers)
+            reachB = std::min(reachB, m.position.x());
+    }
+};
+
+// Fronts of one event follow their coarse fronts through each other, as the coarse BEM sheets
+// pass (CrackFront.h): after 20 steps (radius 3 -> 29 voxels) each reaches 9 voxels past the
+// midplane, as far as its coarse front, to within the 0.5-voxel sub-step.
+TEST(CrackFront, FrontsGrowingTogetherPassThroughEachOther) {
+    TwoFronts t;
+    t.advance(20);
+    double reachA, reachB, farA;
+    t.reach(reachA, reachB, farA);
+    const double v = TwoFronts::voxel, coarse = -20.0 * v + 3.0 * v + 20 * 1.3 * v;
+    std::printf("fronts pass: A reaches x = %+.2f voxels, B reaches x = %+.2f voxels (coarse %+.2f)\n",
+                reachA / v, reachB / v, coarse / v);
+    EXPECT_NEAR(reachA, coarse, 0.5 * v);
+    EXPECT_NEAR(reachB, -coarse, 0.5 * v);
+}
+
+// Stopped fronts carried on to their obstacle (extend) stop at each other instead of crossing:
+// grown to 8 voxels apart, then extended by up to 10 voxels, they meet within 1.5 voxels of
+// the midplane; A's far side, with nothing in its way, goes the whole 10 voxels.
+TEST(CrackFront, FrontsExtendedTogetherMeetInsteadOfCrossing) {
+    TwoFronts t;
+    t.advance(10);  // radius 3 -> 16 voxels: fronts at x = -4 and +4 voxels
+    const double v = TwoFronts::voxel;
+    std::map<int, std::set<int>> stopped;
+    for (const auto& [node, p] : t.a.position) stopped[1].insert(node);
+    for (const auto& [node, p] : t.b.position) stopped[2].insert(node);
+    const FrontAdvanceResult r = t.fronts.extend(stopped, 10.0 * v, unbounded());
+    double reachA, reachB, farA;
+    t.reach(reachA, reachB, farA);
+    std::printf(
+        "fronts meet: A reaches x = %+.2f voxels, B reaches x = %+.2f voxels; A's far side at %.1f "
+        "voxels; %d markers stopped at the other sheet\n",
+        reachA / v, reachB / v, farA / v, r.metSheet);
+    EXPECT_GT(r.metSheet, 0);
+    EXPECT_LT(reachA, 1.5 * v);
+    EXPECT_GT(reachB, -1.5 * v);
+    EXPECT_GT(reachA, -1.5 * v);  // they did meet (no gap wider than the slabs)
+    EXPECT_LT(reachB, 1.5 * v);
+    EXPECT_LT(farA, -45.0 * v);  // -20 - 16 - 10 voxels, to within a voxel of resampling
+}
+
+// A body that lost its x > 0 half after a penny front grew to 8 voxels (§5.3: the kept
+// fragment): the markers now outside are freed and follow the coarse front 5 voxels on, while
+// without freeOutside() they stop where they are on their next move.
+TEST(CrackFront, MarkersOutsideAKeptFragmentFollowTheCoarseFront) {
     const double voxel = 1e-3;
     const Eigen::Vector3d u = Eigen::Vector3d::UnitX(), v = Eigen::Vector3d::UnitY();
-    CrackFronts fronts(voxel);
-    CoarseFront a = circleFront(
-        -20.0 * voxel * u, u, v, 3.0 * voxel, 12, [&](double) { return 1.3 * voxel; }, 0);
-    CoarseFront b = circleFront(
-        20.0 * voxel * u, u, v, 3.0 * voxel, 12, [&](double) { return 1.3 * voxel; }, 100);
-    fronts.addSheet(1, a, unbounded());
-    fronts.addSheet(2, b, unbounded());
-    double reachA = -1e300, reachB = 1e300, farA = 0.0;
-    for (int step = 0; step < 20;
-         ++step) {  // radius 3 -> 29 voxels: without arrest they would overlap 18 voxels
-        const FrontAdvanceResult r = fronts.advance({{1, a}, {2, b}}, unbounded());
-        for (int node : r.arrestedCoarseNodes) (node < 100 ? a : b).advance[node].setZero();
-        moveCoarse(a);
-        moveCoarse(b);
-    }
-    for (const auto& [sheet, mesh] : fronts.takeSwept())
-        for (const auto& p : mesh.vertices) {
-            if (sheet == 1)
-                reachA = std::max(reachA, p.x());
-            else
-                reachB = std::min(reachB, p.x());
+    bool halved = false;
+    const FrontQueries body{[&](const Eigen::Vector3d& p) { return !halved || p.x() < 0.0; },
+                            [](const Eigen::Vector3d&) { return -1; }};
+    auto run = [&](bool release, int& freed, double& reach) {
+        halved = false;
+        CrackFronts fronts(voxel);
+        CoarseFront coarse =
+            circleFront(Eigen::Vector3d::Zero(), u, v, 3.0 * voxel, 12, [&](double) { return 1.0 * voxel; });
+        fronts.addSheet(0, coarse, body);
+        for (int step = 0; step < 5; ++step) {  // radius 3 -> 8 voxels
+            fronts.advance({{0, coarse}}, body);
+            moveCoarse(coarse);
         }
-    for (const FrontMarker& m : fronts.chains(1).front().markers) {
-        reachA = std::max(reachA, m.position.x());
-        farA = std::min(farA, m.position.x());
-    }
-    for (const FrontMarker& m : fronts.chains(2).front().markers) reachB = std::min(reachB, m.position.x());
-    std::printf(
-        "fronts meet: A reaches x = %+.2f voxels, B reaches x = %+.2f voxels; A's far side at %.1f voxels\n",
-        reachA / voxel, reachB / voxel, farA / voxel);
-    EXPECT_LT(reachA, 1.5 * voxel);
-    EXPECT_GT(reachB, -1.5 * voxel);
-    EXPECT_GT(reachA, -1.5 * voxel);  // they did meet (no gap wider than the slabs)
-    EXPECT_LT(reachB, 1.5 * voxel);
-    EXPECT_LT(farA, -45.0 * voxel);  // the far side grew on to 29 voxels radius
+        halved = true;
+        freed = release ? fronts.freeOutside(body) : 0;
+        for (int step = 0; step < 5; ++step) {  // radius 8 -> 13 voxels
+            fronts.advance({{0, coarse}}, body);
+            moveCoarse(coarse);
+        }
+        reach = 0.0;
+        for (const FrontMarker& m : fronts.chains(0).front().markers) reach = std::max(reach, m.position.x());
+    };
+    int freed = 0, none = 0;
+    double reachFreed = 0.0, reachStopped = 0.0;
+    run(true, freed, reachFreed);
+    run(false, none, reachStopped);
+    std::printf("kept fragment: %d markers freed, reach x = %.2f voxels (%.2f without freeing)\n", freed,
+                reachFreed / voxel, reachStopped / voxel);
+    EXPECT_GT(freed, 10);                                 // about half of the ~50 markers at 8 voxels
+    EXPECT_NEAR(reachFreed, 13.0 * voxel, 0.5 * voxel);   // followed the coarse front
+    EXPECT_NEAR(reachStopped, 8.0 * voxel, 0.5 * voxel);  // stopped where the body left them
 }
 
 // The same marker run twice gives bit-identical markers and swept surfaces.
