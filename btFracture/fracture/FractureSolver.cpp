@@ -42,7 +42,7 @@ void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
         const CrackSystem::Solution s = full_->solve(q);
         displacements_ = s.displacements;
         solvedOpenings_ = full_->nodalOpenings(s);
-        leavingOpenings_ = solvedOpenings_;  // openings of the event start count as just left
+        leavingOpenings_ = Eigen::VectorXd::Zero(solvedOpenings_.size());  // as EST starts an event
     } else {
         // EST: one crack-free solve per event; existing cracks are re-estimated as fronts move.
         crackLoad_.setZero();
@@ -67,7 +67,7 @@ int FractureSolver::seed() {
             const CrackSystem::Solution s = full_->solve(tractions_);
             displacements_ = s.displacements;
             solvedOpenings_ = full_->nodalOpenings(s);
-            recordLeavingOpenings(fresh);
+            recordLeavingOpenings(fresh, Eigen::VectorXd::Zero(3 * fresh.size()));  // no front left them
         } else {
             const Eigen::Index oldSize = estimatedOpenings_.size();
             estimatedOpenings_.conservativeResize(3 * cracks_.nodeCount());
@@ -177,20 +177,8 @@ FractureStepRecord FractureSolver::step(int index) {
 void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
                                       const std::map<int, double>& advanced) {
     const std::vector<int> fresh = cracks_.refreshUnknowns();
-    if (active_ == FractureMethod::Full) {
-        full_->update();
-        const CrackSystem::Solution s = full_->solve(tractions_);
-        displacements_ = s.displacements;
-        solvedOpenings_ = full_->nodalOpenings(s);
-        recordLeavingOpenings(fresh);
-        return;
-    }
-    // EST (§4.3): the nodes the front just left get the opening that inverting the displacement
-    // correlation gives, and their crack-surface coupling C (never stored) corrects the load.
-    const Eigen::Index oldSize = estimatedOpenings_.size();
-    estimatedOpenings_.conservativeResize(3 * cracks_.nodeCount());
-    estimatedOpenings_.tail(estimatedOpenings_.size() - oldSize).setZero();
-    std::vector<int> unknowns;
+    // §4.3: the nodes the front just left get the opening that inverting the displacement
+    // correlation gives (FULL keeps them for a HYBRID switch, EST corrects the load with them).
     Eigen::VectorXd cod(3 * fresh.size());
     for (std::size_t i = 0; i < fresh.size(); ++i) {
         const int node = fresh[i];
@@ -200,9 +188,24 @@ void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
             std::find_if(sifs.begin(), sifs.end(), [node](const FrontSifs& s) { return s.node == node; });
         if (moved != advanced.end() && f != sifs.end())
             opening = openingFromSifs(*f, moved->second, field_.material());
-        estimatedOpenings_.segment<3>(3 * node) = opening;
-        unknowns.push_back(cracks_.unknownOf(node));
         cod.segment<3>(3 * i) = opening;
+    }
+    if (active_ == FractureMethod::Full) {
+        full_->update();
+        const CrackSystem::Solution s = full_->solve(tractions_);
+        displacements_ = s.displacements;
+        solvedOpenings_ = full_->nodalOpenings(s);
+        recordLeavingOpenings(fresh, cod);
+        return;
+    }
+    // EST: their crack-surface coupling C (never stored) corrects the load.
+    const Eigen::Index oldSize = estimatedOpenings_.size();
+    estimatedOpenings_.conservativeResize(3 * cracks_.nodeCount());
+    estimatedOpenings_.tail(estimatedOpenings_.size() - oldSize).setZero();
+    std::vector<int> unknowns;
+    for (std::size_t i = 0; i < fresh.size(); ++i) {
+        estimatedOpenings_.segment<3>(3 * fresh[i]) = cod.segment<3>(3 * i);
+        unknowns.push_back(cracks_.unknownOf(fresh[i]));
     }
     if (!settings_.estimatorUpdate || unknowns.empty()) return;
     const CrackSurfaceCoupling coupling = assembleCrackSurfaceCoupling(solver_, cracks_, unknowns);
@@ -210,18 +213,20 @@ void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
     displacements_ = solver_.displacementsFromLoad(load_ - crackLoad_);
 }
 
-void FractureSolver::recordLeavingOpenings(const std::vector<int>& fresh) {
+void FractureSolver::recordLeavingOpenings(const std::vector<int>& fresh, const Eigen::VectorXd& cod) {
     const Eigen::Index oldSize = leavingOpenings_.size();
     leavingOpenings_.conservativeResize(3 * cracks_.nodeCount());
     leavingOpenings_.tail(leavingOpenings_.size() - oldSize).setZero();
-    for (const int node : fresh) leavingOpenings_.segment<3>(3 * node) = solvedOpenings_.segment<3>(3 * node);
+    for (std::size_t i = 0; i < fresh.size(); ++i)
+        leavingOpenings_.segment<3>(3 * fresh[i]) = cod.segment<3>(3 * i);
 }
 
 void FractureSolver::switchToEstimator() {
-    // Carry FULL's cracks over as EST would have built them (§4.3): each node's opening from when
-    // the front left it, C cod of those as the crack load. The current openings, grown since,
-    // would double count: the surface-only stress of §4.2 would see the whole crack's opening
-    // on top of its sqrt(pi a) factor (measured: K 20-147 % above FULL's right after the switch).
+    // Carry FULL's cracks over as EST would have built them (§4.3): for each node the opening
+    // that inverting the correlation gave (with FULL's SIFs) when the front left it, C cod of
+    // those as the crack load. The solved openings, grown since, would count the crack twice: the
+    // surface-only stress of §4.2 would see its whole opening on top of the sqrt(pi a) factor
+    // (measured: K_I 22-41 % above FULL's after the switch, tests/crack).
     if (full_ && cracks_.unknownCount() > 0) {
         Eigen::VectorXd cod(3 * cracks_.unknownCount());
         for (int k = 0; k < cracks_.unknownCount(); ++k)

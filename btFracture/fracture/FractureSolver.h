@@ -84,7 +84,7 @@ public:
 private:
     void updateFrontState(const std::vector<FrontSifs>& sifs, const std::map<int, double>& advanced);
     void switchToEstimator();
-    void recordLeavingOpenings(const std::vector<int>& fresh);
+    void recordLeavingOpenings(const std::vector<int>& fresh, const Eigen::VectorXd& cod);
     int meshElements() const { return solver_.mesh().triangleCount() + cracks_.triangleCount(); }
 
     const ElasticSolver& solver_;
@@ -96,7 +96,7 @@ private:
     double meanSize_ = 0.0;  // mean BEM triangle diameter h [m]
     Eigen::VectorXd tractions_, load_, crackLoad_, displacements_;
     Eigen::VectorXd crackFree_;        // EST: the event's crack-free displacements (no §4.3)
-    Eigen::VectorXd leavingOpenings_;  // FULL: per crack node, its COD when it left the front
+    Eigen::VectorXd leavingOpenings_;  // FULL: per crack node, the §4.3 estimate of its opening
     int gainLimited_ = 0;
     Eigen::VectorXd estimatedOpenings_;  // EST: per crack node, 3 each
     Eigen::VectorXd solvedOpenings_;     // FULL: per crack node, 3 each
