@@ -3,6 +3,7 @@
 // ended with, §4.4). Each run is a child process (peak memory per run). Writes runs.csv,
 // steps.csv, table.md and the charts into --out, and prints METRIC lines.
 //   accuracy_vs_time [--out DIR] [--smoke] [--frames N] [--cases a,b,...] [--methods FULL,EST,...]
+//   [--verbose]
 // --smoke: penny, inclined penny and the mode-I growth test, FULL and EST only; exits non-zero when EST's
 // mode-I SIF error exceeds 15 % or FULL's penny K_I is off by more than 3 %.
 #include "IsolatedRun.h"
@@ -11,6 +12,7 @@
 #include "SolverCases.h"
 #include "SurfaceDistance.h"
 
+#include <btFracture/core/Log.h>
 #include <btFracture/core/Timer.h>
 
 #include <sys/stat.h>
@@ -92,11 +94,13 @@ int main(int argc, char** argv) {
             filter = argv[++i];
         else if (!std::strcmp(argv[i], "--methods") && i + 1 < argc)
             methodFilter = argv[++i];
+        else if (!std::strcmp(argv[i], "--verbose"))  // per-step fracture log (debug level)
+            btfracture::setLogLevel(btfracture::LogLevel::Debug);
         else {
-            std::fprintf(
-                stderr,
-                "usage: %s [--out DIR] [--smoke] [--frames N] [--cases a,b,...] [--methods FULL,EST,...]\n",
-                argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--out DIR] [--smoke] [--frames N] [--cases a,b,...] [--methods "
+                         "FULL,EST,...] [--verbose]\n",
+                         argv[0]);
             return 2;
         }
     }

@@ -41,6 +41,8 @@ void FractureSettings::validate() const {
     if (!(minimumSpeed > 0.0 && minimumSpeed <= 1.0)) fail("minimumSpeed", minimumSpeed, "in (0, 1]");
     if (!(estimatorGeometryFactor > 0.0 && std::isfinite(estimatorGeometryFactor)))
         fail("estimatorGeometryFactor", estimatorGeometryFactor, "positive");
+    if (!(estimatorUpdateGainLimit == 0.0 || estimatorUpdateGainLimit >= 1.0))
+        fail("estimatorUpdateGainLimit", estimatorUpdateGainLimit, "0 (off) or >= 1");
     if (!(noise.amplitude >= 0.0 && noise.amplitude < 1.0))
         fail("noise.amplitude", noise.amplitude, "in [0, 1)");
     if (!(noise.wavelength > 0.0 && std::isfinite(noise.wavelength)))

@@ -42,11 +42,13 @@ void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
         const CrackSystem::Solution s = full_->solve(q);
         displacements_ = s.displacements;
         solvedOpenings_ = full_->nodalOpenings(s);
+        leavingOpenings_ = Eigen::VectorXd::Zero(solvedOpenings_.size());  // as EST starts an event
     } else {
         // EST: one crack-free solve per event; existing cracks are re-estimated as fronts move.
         crackLoad_.setZero();
         estimatedOpenings_ = Eigen::VectorXd::Zero(3 * cracks_.nodeCount());
         displacements_ = solver_.displacements(q);
+        crackFree_ = displacements_;
     }
 }
 
@@ -59,12 +61,13 @@ int FractureSolver::seed() {
                                  settings_.seedRadius, seeded_);
     arrested_.resize(cracks_.nodeCount(), 0);
     if (seeds > 0) {
-        cracks_.refreshUnknowns();
+        const std::vector<int> fresh = cracks_.refreshUnknowns();
         if (active_ == FractureMethod::Full) {
             full_->update();
             const CrackSystem::Solution s = full_->solve(tractions_);
             displacements_ = s.displacements;
             solvedOpenings_ = full_->nodalOpenings(s);
+            recordLeavingOpenings(fresh, Eigen::VectorXd::Zero(3 * fresh.size()));  // no front left them
         } else {
             const Eigen::Index oldSize = estimatedOpenings_.size();
             estimatedOpenings_.conservativeResize(3 * cracks_.nodeCount());
@@ -87,8 +90,13 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
         displacementCorrelation(cracks_, Eigen::VectorXd::Zero(3 * cracks_.nodeCount()), m);
     const StressEvaluator stress(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), displacements_,
                                  tractions_);
+    const double limit = settings_.estimatorUpdate ? settings_.estimatorUpdateGainLimit : 0.0;
+    const StressEvaluator crackFree(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), crackFree_,
+                                    tractions_);
+    auto Keff = [&](const FrontSifs& s) { return effectiveK(s.KI, s.KII, s.KIII, m.poissonRatio()); };
     std::vector<FrontSifs> out;
     out.reserve(frames.size());
+    gainLimited_ = 0;
     for (const FrontSifs& f : frames) {
         if (skip(f)) continue;
         double area = 0.0;
@@ -96,6 +104,17 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
             area = cracks_.sheetArea(cracks_.trianglesAtNode(f.node)[0]);
         FrontSifs e = estimateSifs(f.frame, stress.stressAt(f.position), area, m.compressiveFactor(),
                                    settings_.estimatorGeometryFactor);
+        if (limit > 0.0) {  // the §4.3 update raises K_eff at most `limit` times (FractureSettings)
+            const double K = Keff(e),
+                         bound = limit *
+                                 Keff(estimateSifs(f.frame, crackFree.stressAt(f.position), area,
+                                                   m.compressiveFactor(), settings_.estimatorGeometryFactor));
+            if (K > bound) {
+                const double scale = bound / K;
+                e.KI *= scale, e.KII *= scale, e.KIII *= scale;
+                ++gainLimited_;
+            }
+        }
         e.node = f.node;
         e.position = f.position;
         e.spacing = f.spacing;
@@ -116,6 +135,11 @@ FractureStepRecord FractureSolver::step(int index) {
     const std::vector<FrontSifs> sifs = frontSifs(true);
     record.sifSeconds = timer.seconds();
     record.frontNodes = static_cast<int>(sifs.size());
+    record.gainLimitedNodes = active_ == FractureMethod::Estimated ? gainLimited_ : 0;
+    if (record.gainLimitedNodes > 0)
+        logf(LogLevel::Info, "fracture: step ", index, ": estimatorUpdateGainLimit ",
+             settings_.estimatorUpdateGainLimit, " scaled down the SIFs of ", record.gainLimitedNodes, " of ",
+             record.frontNodes, " fronts");
 
     timer.restart();
     const Material& m = field_.material();
@@ -150,25 +174,17 @@ FractureStepRecord FractureSolver::step(int index) {
     if (growth.advancedNodes > 0) updateFrontState(sifs, growth.advanced);
     record.growthSeconds = timer.seconds();
     record.crackTriangles = cracks_.triangleCount();
+    logf(LogLevel::Debug, "fracture: step ", index, " ", toString(active_), ": ", record.frontNodes,
+         " front nodes, ", record.advancedNodes, " advanced, ", record.arrestedNodes, " arrested, max K/Kc ",
+         record.maxLoadRatio, ", ", record.crackTriangles, " crack triangles");
     return record;
 }
 
 void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
                                       const std::map<int, double>& advanced) {
     const std::vector<int> fresh = cracks_.refreshUnknowns();
-    if (active_ == FractureMethod::Full) {
-        full_->update();
-        const CrackSystem::Solution s = full_->solve(tractions_);
-        displacements_ = s.displacements;
-        solvedOpenings_ = full_->nodalOpenings(s);
-        return;
-    }
-    // EST (§4.3): the nodes the front just left get the opening that inverting the displacement
-    // correlation gives, and their crack-surface coupling C (never stored) corrects the load.
-    const Eigen::Index oldSize = estimatedOpenings_.size();
-    estimatedOpenings_.conservativeResize(3 * cracks_.nodeCount());
-    estimatedOpenings_.tail(estimatedOpenings_.size() - oldSize).setZero();
-    std::vector<int> unknowns;
+    // §4.3: the nodes the front just left get the opening that inverting the displacement
+    // correlation gives (FULL keeps them for a HYBRID switch, EST corrects the load with them).
     Eigen::VectorXd cod(3 * fresh.size());
     for (std::size_t i = 0; i < fresh.size(); ++i) {
         const int node = fresh[i];
@@ -178,9 +194,24 @@ void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
             std::find_if(sifs.begin(), sifs.end(), [node](const FrontSifs& s) { return s.node == node; });
         if (moved != advanced.end() && f != sifs.end())
             opening = openingFromSifs(*f, moved->second, field_.material());
-        estimatedOpenings_.segment<3>(3 * node) = opening;
-        unknowns.push_back(cracks_.unknownOf(node));
         cod.segment<3>(3 * i) = opening;
+    }
+    if (active_ == FractureMethod::Full) {
+        full_->update();
+        const CrackSystem::Solution s = full_->solve(tractions_);
+        displacements_ = s.displacements;
+        solvedOpenings_ = full_->nodalOpenings(s);
+        recordLeavingOpenings(fresh, cod);
+        return;
+    }
+    // EST: their crack-surface coupling C (never stored) corrects the load.
+    const Eigen::Index oldSize = estimatedOpenings_.size();
+    estimatedOpenings_.conservativeResize(3 * cracks_.nodeCount());
+    estimatedOpenings_.tail(estimatedOpenings_.size() - oldSize).setZero();
+    std::vector<int> unknowns;
+    for (std::size_t i = 0; i < fresh.size(); ++i) {
+        estimatedOpenings_.segment<3>(3 * fresh[i]) = cod.segment<3>(3 * i);
+        unknowns.push_back(cracks_.unknownOf(fresh[i]));
     }
     if (!settings_.estimatorUpdate || unknowns.empty()) return;
     const CrackSurfaceCoupling coupling = assembleCrackSurfaceCoupling(solver_, cracks_, unknowns);
@@ -188,15 +219,29 @@ void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
     displacements_ = solver_.displacementsFromLoad(load_ - crackLoad_);
 }
 
+void FractureSolver::recordLeavingOpenings(const std::vector<int>& fresh, const Eigen::VectorXd& cod) {
+    const Eigen::Index oldSize = leavingOpenings_.size();
+    leavingOpenings_.conservativeResize(3 * cracks_.nodeCount());
+    leavingOpenings_.tail(leavingOpenings_.size() - oldSize).setZero();
+    for (std::size_t i = 0; i < fresh.size(); ++i)
+        leavingOpenings_.segment<3>(3 * fresh[i]) = cod.segment<3>(3 * i);
+}
+
 void FractureSolver::switchToEstimator() {
-    // Keep what FULL knew: the crack load C cod of the current openings; then drop D.
+    // Carry FULL's cracks over as EST would have built them (§4.3): for each node the opening
+    // that inverting the correlation gave (with FULL's SIFs) when the front left it, C cod of
+    // those as the crack load. The solved openings, grown since, would count the crack twice: the
+    // surface-only stress of §4.2 would see its whole opening on top of the sqrt(pi a) factor
+    // (measured: K_I 22-41 % above FULL's after the switch, tests/crack).
     if (full_ && cracks_.unknownCount() > 0) {
         Eigen::VectorXd cod(3 * cracks_.unknownCount());
         for (int k = 0; k < cracks_.unknownCount(); ++k)
-            cod.segment<3>(3 * k) = solvedOpenings_.segment<3>(3 * cracks_.nodeOfUnknown()[k]);
+            cod.segment<3>(3 * k) = leavingOpenings_.segment<3>(3 * cracks_.nodeOfUnknown()[k]);
         crackLoad_ = full_->surfaceCrackBlock() * cod;
+        displacements_ = solver_.displacementsFromLoad(load_ - crackLoad_);
         estimatedOpenings_ = solvedOpenings_;
     }
+    crackFree_ = solver_.displacements(tractions_);
     full_.reset();
     active_ = FractureMethod::Estimated;
     logf(LogLevel::Info, "fracture: HYBRID switched to the estimator at ", meshElements(), " BEM elements");

@@ -28,6 +28,7 @@ struct FractureStepRecord {
     int frontNodes = 0, advancedNodes = 0, arrestedNodes = 0;
     int crackTriangles = 0;     // after the step
     double maxLoadRatio = 0.0;  // max K_eff / K_c over the front before the step
+    int gainLimitedNodes = 0;   // EST: fronts whose SIFs estimatorUpdateGainLimit scaled down
     double sifSeconds = 0.0, growthSeconds = 0.0;
 };
 
@@ -61,6 +62,8 @@ public:
     // SIFs of the active method now; with activeOnly, arrested front nodes are left out (EST then
     // evaluates the local stress only where the front can still move: cost ~ active front).
     std::vector<FrontSifs> frontSifs(bool activeOnly = false);
+    // EST: fronts the last frontSifs() call limited (FractureSettings::estimatorUpdateGainLimit).
+    int gainLimitedNodes() const { return gainLimited_; }
     FractureStepRecord step(int index);  // one propagation step
 
     // Called in every step with the front advances (BEM frame) before the sheets grow; returns
@@ -81,6 +84,7 @@ public:
 private:
     void updateFrontState(const std::vector<FrontSifs>& sifs, const std::map<int, double>& advanced);
     void switchToEstimator();
+    void recordLeavingOpenings(const std::vector<int>& fresh, const Eigen::VectorXd& cod);
     int meshElements() const { return solver_.mesh().triangleCount() + cracks_.triangleCount(); }
 
     const ElasticSolver& solver_;
@@ -91,6 +95,9 @@ private:
     FractureMethod active_;
     double meanSize_ = 0.0;  // mean BEM triangle diameter h [m]
     Eigen::VectorXd tractions_, load_, crackLoad_, displacements_;
+    Eigen::VectorXd crackFree_;        // EST: the event's crack-free displacements (no §4.3)
+    Eigen::VectorXd leavingOpenings_;  // FULL: per crack node, the §4.3 estimate of its opening
+    int gainLimited_ = 0;
     Eigen::VectorXd estimatedOpenings_;  // EST: per crack node, 3 each
     Eigen::VectorXd solvedOpenings_;     // FULL: per crack node, 3 each
     std::vector<char> arrested_;         // per crack node

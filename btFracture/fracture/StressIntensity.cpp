@@ -66,7 +66,8 @@ std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Ei
 Eigen::Vector3d openingFromSifs(const FrontSifs& f, double distance, const Material& material) {
     const double mu = material.shearModulus(), nu = material.poissonRatio();
     const double scale = 2.0 * std::sqrt(2.0 * distance) / (mu * std::sqrt(M_PI));
-    return scale * ((1.0 - nu) * (f.KI * f.frame.normal + f.KII * f.frame.ahead) + f.KIII * f.frame.tangent);
+    const double KI = f.compressive ? -std::abs(f.KI) : f.KI;
+    return scale * ((1.0 - nu) * (KI * f.frame.normal + f.KII * f.frame.ahead) + f.KIII * f.frame.tangent);
 }
 
 }  // namespace btfracture

@@ -40,6 +40,8 @@ std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Ei
 // per mode with c = 1 - nu for modes I and II and c = 1 for mode III, in the given frame. The
 // paper's formula has no factor 2: it gives the displacement of one crack face, while the
 // opening (what the COD unknowns and displacementCorrelation use) is the jump between both.
+// A compressive front (EST's K_I is a magnitude) closes: its normal jump is -|K_I| c ..., as the
+// correlation's K_I < 0 would give (the BEM has no contact, FULL's faces interpenetrate too).
 Eigen::Vector3d openingFromSifs(const FrontSifs& sifs, double distance, const Material& material);
 
 }  // namespace btfracture
