@@ -39,6 +39,22 @@ MassProperties computeMassProperties(const TriangleMesh& mesh) {
     return p;
 }
 
+double enclosedVolume(const TriangleMesh& mesh) {
+    double volume = 0.0;
+    for (const auto& t : mesh.triangles)
+        volume += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]])) / 6.0;
+    return volume;
+}
+
+double surfaceArea(const TriangleMesh& mesh) {
+    double area = 0.0;
+    for (const auto& t : mesh.triangles)
+        area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                          .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
+                          .norm();
+    return area;
+}
+
 PrincipalAxes principalAxes(const Eigen::Matrix3d& inertia) {
     if (!inertia.allFinite()) {
         std::ostringstream msg;

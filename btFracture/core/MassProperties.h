@@ -17,6 +17,12 @@ struct MassProperties {
 // Throws btfracture::Error naming mesh.name if the enclosed volume is not positive.
 MassProperties computeMassProperties(const TriangleMesh& mesh);
 
+// Signed volume enclosed by the mesh [m^3] (positive for a closed outward mesh); never throws.
+double enclosedVolume(const TriangleMesh& mesh);
+
+// Sum of the triangle areas [m^2].
+double surfaceArea(const TriangleMesh& mesh);
+
 // Principal frame of a symmetric inertia tensor: inertia = rotation * diag(moments) * rotation^T
 // with moments ascending and rotation proper (det +1). Deterministic signs: the largest-magnitude
 // component of each of the first two columns is positive, the third is their cross product.

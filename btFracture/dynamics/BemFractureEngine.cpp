@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <set>
@@ -121,23 +122,43 @@ Eigen::Isometry3d fragmentFrame(const Eigen::Vector3d& centreOfMass, const Eigen
 // bench_refracture_source).
 constexpr double kBemSourceVoxelsPerEdge = 3.0;
 
+// Level-set and body volumes agree within 0.1 % at the default voxel size; a larger
+// difference (coarse voxels) is logged when fragment volumes are scaled to the body's.
+constexpr double kVolumeScaleLogged = 0.01;
+
 void buildBem(BemFractureState& s, const btFractureRigidBody& body, const FractureSettings& base,
               bool voxelFronts, FractureStatistics& stats) {
     const FractureBodySettings& b = body.settings();
-    // Sources to remesh, best first. A fragment (§5.3): its solid rebuilt from its level set,
-    // else its collision mesh (small pieces whose BEM edge spans few voxels sometimes remesh
-    // only from that one); an original body: its own mesh.
-    std::vector<TriangleMesh> sources;
+    // Sources to remesh, best first, each made only when the ones before it failed. A fragment
+    // (§5.3): its solid rebuilt from its level set; the same at half the resolution (parts that
+    // nearly touch merge, slivers vanish); its collision mesh (small pieces whose BEM edge spans
+    // few voxels sometimes remesh only from that one). An original body: its own mesh.
+    struct Source {
+        const char* what;
+        std::function<TriangleMesh()> make;
+    };
+    std::vector<Source> sources;
     if (s.bemSource.triangles.empty() && s.levelSet) {
-        const Timer timer;
-        sources.push_back(s.levelSet->bemSourceMesh(b.bemTriangleTarget, kBemSourceVoxelsPerEdge));
-        logf(LogLevel::Info, body.name(), ": BEM source of ", sources.back().triangles.size(),
-             " triangles from its level set in ", timer.seconds(), " s");
-        TriangleMesh collision = body.mesh();
-        for (auto& v : collision.vertices) v = s.bodyToState * v;
-        sources.push_back(std::move(collision));
+        for (double voxelsPerEdge : {kBemSourceVoxelsPerEdge, 0.5 * kBemSourceVoxelsPerEdge}) {
+            sources.push_back(
+                {voxelsPerEdge == kBemSourceVoxelsPerEdge ? "its level-set surface"
+                                                          : "its level-set surface at half resolution",
+                 [&s, &body, &b, voxelsPerEdge] {
+                     const Timer timer;
+                     TriangleMesh m = s.levelSet->bemSourceMesh(b.bemTriangleTarget, voxelsPerEdge);
+                     logf(LogLevel::Info, body.name(), ": BEM source of ", m.triangles.size(),
+                          " triangles from its level set (", voxelsPerEdge, " voxels per edge) in ",
+                          timer.seconds(), " s");
+                     return m;
+                 }});
+        }
+        sources.push_back({"its collision mesh", [&s, &body] {
+                               TriangleMesh collision = body.mesh();
+                               for (auto& v : collision.vertices) v = s.bodyToState * v;
+                               return collision;
+                           }});
     } else {
-        sources.push_back(s.bemSource);
+        sources.push_back({"its surface mesh", [&s] { return s.bemSource; }});
     }
     // One refinement round at most: on fragment surfaces whose parts nearly touch, more rounds
     // cost minutes and still leave intersections. A self-intersecting source cannot give a
@@ -147,24 +168,23 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
     TriangleMesh bem;
     std::string problems;
     for (std::size_t k = 0; k < sources.size() && bem.triangles.empty(); ++k) {
-        const char* what = sources.size() == 1 ? "its surface mesh"
-                           : k == 0            ? "its level-set surface"
-                                               : "its collision mesh";
-        const std::size_t crossings = findSelfIntersections(sources[k]).size();
+        TriangleMesh source = sources[k].make();
+        const std::size_t crossings = findSelfIntersections(source).size();
         if (crossings > 0) {
-            problems += std::string(problems.empty() ? "" : "; ") + what + " has " +
+            problems += std::string(problems.empty() ? "" : "; ") + sources[k].what + " has " +
                         std::to_string(crossings) + " self-intersecting triangle pairs";
             continue;
         }
-        TriangleMesh candidate = remeshForBem(sources[k], b.bemTriangleTarget, remesh);
+        TriangleMesh candidate = remeshForBem(source, b.bemTriangleTarget, remesh);
         const std::size_t left = findSelfIntersections(candidate).size();
         if (left > 0) {
-            problems += std::string(problems.empty() ? "" : "; ") + "the BEM remesh of " + what + " has " +
-                        std::to_string(left) + " self-intersecting triangle pairs";
+            problems += std::string(problems.empty() ? "" : "; ") + "the BEM remesh of " + sources[k].what +
+                        " has " + std::to_string(left) + " self-intersecting triangle pairs";
             continue;
         }
-        if (k > 0) logf(LogLevel::Info, body.name(), ": BEM mesh from ", what, " (", problems, ")");
-        s.bemSource = std::move(sources[k]);
+        if (k > 0)
+            logf(LogLevel::Info, body.name(), ": BEM mesh from ", sources[k].what, " (", problems, ")");
+        s.bemSource = std::move(source);
         bem = std::move(candidate);
     }
     if (bem.triangles.empty()) throw Error(body.name() + ": no BEM mesh can be built: " + problems);
@@ -196,6 +216,23 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
         s.fracture->cracks() = std::move(moved);
         s.carriedCracks = CrackMesh();
     }
+}
+
+// Old sheet id -> new sheet id of the cracks `carried` = cracks.extractSheets(sheets, ...) took
+// over: extractSheets keeps the triangles' order, so the k-th triangle of the selected sheets
+// is the carried mesh's triangle k. The fragment's level set must use the carried ids: its later
+// cuts, crackAt (fronts meeting other cracks) and its own fragments' incomplete cracks refer to
+// the crack mesh the fragment solves with.
+std::map<int, int> carriedSheetIds(const CrackMesh& cracks, const std::vector<int>& sheets,
+                                   CrackMesh& carried) {
+    carried.refreshUnknowns();
+    std::map<int, int> newIdOf;
+    int k = 0;
+    for (int t = 0; t < cracks.triangleCount(); ++t) {
+        if (std::find(sheets.begin(), sheets.end(), cracks.sheetOf(t)) == sheets.end()) continue;
+        newIdOf.emplace(cracks.sheetOf(t), carried.sheetOf(k++));
+    }
+    return newIdOf;
 }
 
 // What to cut into the level set (state frame). Sheets with voxel-resolution markers: the
@@ -267,11 +304,7 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
 // A collision mesh usable for a rigid body: closed with a volume of at least a tenth of the
 // level-set volume it stands for.
 bool hasVolume(const TriangleMesh& mesh, double volume) {
-    if (mesh.triangles.size() < 4) return false;
-    double enclosed = 0.0;
-    for (const auto& t : mesh.triangles)
-        enclosed += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]])) / 6.0;
-    return enclosed > 0.1 * volume;
+    return mesh.triangles.size() >= 4 && enclosedVolume(mesh) > 0.1 * volume;
 }
 
 FragmentSpec::Class specClass(FragmentClass c) {
@@ -384,6 +417,16 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     outcome.timings.geometry += timer.seconds();
     if (fragments.size() < 2) return outcome;  // cracked, not yet apart: the cracks stay for later events
 
+    // Mass conservation: the level set measures the body's volume only to the voxel tolerance
+    // (2 % over on a slab 2 voxels thick), while the body's mass is its own volume (the root's is
+    // exact on its mesh). Fragment volumes and inertias scale by body / level-set volume, so the
+    // pieces of an event add up to the parent (minus dropped dust) at any voxel size.
+    const double levelSetVolume = s.levelSet->massProperties().volume;
+    const double volumeScale = body.volume() / levelSetVolume;
+    if (std::abs(volumeScale - 1.0) > kVolumeScaleLogged)
+        logf(LogLevel::Info, body.name(), ": level-set volume ", levelSetVolume,
+             " m^3 differs from the body's ", body.volume(), " m^3 by ", 100.0 * (1.0 / volumeScale - 1.0),
+             " %; fragment volumes and inertias scaled by ", volumeScale, " to conserve mass");
     const double density = body.material().density();
     const Eigen::Isometry3d parentToState = s.bodyToState;
     const Eigen::Isometry3d stateToBody = parentToState.inverse();
@@ -403,10 +446,10 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
             spec.cls = FragmentSpec::Class::ConvexHull;
         }
         for (auto& v : spec.collisionMesh.vertices) v = stateToBody * v;
-        spec.volume = f.mass.volume;
+        spec.volume = volumeScale * f.mass.volume;
         spec.centreOfMass = stateToBody * f.mass.centreOfMass;
         const Eigen::Matrix3d R = stateToBody.linear();
-        spec.inertiaAboutCom = density * R * f.mass.inertiaPerDensity * R.transpose();
+        spec.inertiaAboutCom = volumeScale * density * R * f.mass.inertiaPerDensity * R.transpose();
         const Eigen::Isometry3d childToParentBody = fragmentFrame(spec.centreOfMass, spec.inertiaAboutCom);
         if (spec.cls == FragmentSpec::Class::KeepsParentSolver) {
             // The state moves on with this fragment: its BEM, cracks and its own level set.
@@ -423,8 +466,11 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
             auto carried = std::make_unique<BemFractureState>();
             carried->bodyToState = parentToState * childToParentBody;
             carried->levelSet = f.levelSet;  // its BEM source is made from it when first needed
-            if (!f.incompleteCracks.empty())
+            if (!f.incompleteCracks.empty()) {
                 carried->carriedCracks = s.fracture->cracks().extractSheets(f.incompleteCracks, offset);
+                carried->levelSet->renameCracks(
+                    carriedSheetIds(s.fracture->cracks(), f.incompleteCracks, carried->carriedCracks));
+            }
             spec.carriedState = std::move(carried);
         }
         outcome.fragments.push_back(std::move(spec));

@@ -57,7 +57,7 @@ const char* className(FragmentSpec::Class cls) {
 }
 
 // Throws when the engine's fragment is unusable.
-void validateSpec(const FragmentSpec& spec, const std::string& where) {
+void validateSpec(const FragmentSpec& spec, double originalVolume, const std::string& where) {
     std::ostringstream problem;
     const Eigen::Matrix3d& J = spec.inertiaAboutCom;
     if (spec.collisionMesh.vertices.size() < 4 || spec.collisionMesh.triangles.size() < 4)
@@ -65,6 +65,8 @@ void validateSpec(const FragmentSpec& spec, const std::string& where) {
                 << spec.collisionMesh.triangles.size() << " triangles (need a closed mesh)";
     else if (!(spec.volume > 0.0) || !std::isfinite(spec.volume))
         problem << "volume " << spec.volume << " m^3 (need > 0)";
+    else if (spec.volume * (1.0 - btFractureRigidBody::kOriginalVolumeTolerance) > originalVolume)
+        problem << "volume " << spec.volume << " m^3 above the original body's " << originalVolume << " m^3";
     else if (!spec.centreOfMass.allFinite())
         problem << "non-finite centre of mass";
     else if (!J.allFinite() || (J - J.transpose()).norm() > 1e-9 * J.norm())
@@ -441,7 +443,8 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             event.info.engineTimings = event.outcome.timings;
             event.info.crackTriangles = event.outcome.crackTriangles;
             for (std::size_t k = 0; k < event.outcome.fragments.size(); ++k)
-                validateSpec(event.outcome.fragments[k], body->name() + ": fragment " + std::to_string(k));
+                validateSpec(event.outcome.fragments[k], body->originalVolume(),
+                             body->name() + ": fragment " + std::to_string(k));
         } catch (const Error& error) {
             ++stats_.engineFailures;
             logf(LogLevel::Error, body->name(), ": fracture failed, body made unbreakable: ", error.what());

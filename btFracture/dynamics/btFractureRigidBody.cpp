@@ -122,9 +122,8 @@ btFractureRigidBody::btFractureRigidBody(const Material& material, TriangleMesh 
                   problem << "volume " << volume << " m^3 (need > 0)";
               else if (!principalInertia.allFinite() || !(principalInertia.minCoeff() > 0.0))
                   problem << "principal inertia (" << principalInertia.transpose() << ") kg m^2 (need > 0)";
-              // Fragment volumes are measured on the level set, the root's on its mesh: they
-              // differ by the voxel tolerance (< 0.5 % measured), so allow 2 %.
-              else if (!(originalVolume >= volume * (1.0 - 0.02)) || !std::isfinite(originalVolume))
+              else if (!(originalVolume >= volume * (1.0 - kOriginalVolumeTolerance)) ||
+                       !std::isfinite(originalVolume))
                   problem << "original volume " << originalVolume << " m^3 below the body's volume "
                           << volume;
               if (problem.tellp() > 0) throw Error(name + ": " + problem.str());

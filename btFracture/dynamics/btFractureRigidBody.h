@@ -49,7 +49,8 @@ public:
                         const btTransform& modelTransform = btTransform::getIdentity());
     // A mesh already in its body frame (centre of mass at the origin, principal axes), with its
     // shape, volume [m^3], principal moments [kg m^2] and the root body's volume (fragment classes,
-    // §5.2). Used for fragments. Throws when the data are inconsistent.
+    // §5.2). Used for fragments. Throws when the data are inconsistent, e.g. a volume above
+    // originalVolume by more than kOriginalVolumeTolerance.
     btFractureRigidBody(const Material& material, TriangleMesh bodyFrameMesh,
                         std::unique_ptr<CollisionShapeStorage> shape, double volume,
                         const Eigen::Vector3d& principalInertia, double originalVolume,
@@ -83,6 +84,9 @@ public:
 
     double volume() const { return volume_; }                  // [m^3]
     double originalVolume() const { return originalVolume_; }  // volume of the unbroken root body [m^3]
+    // Relative amount by which a fragment's volume may exceed originalVolume(): fragment volumes
+    // are measured on the level set, the root's on its mesh (< 0.5 % apart at default voxels).
+    static constexpr double kOriginalVolumeTolerance = 0.02;
     double characteristicLength() const { return characteristicLength_; }  // cube root of the volume [m]
     const btTransform& bodyInModelFrame() const { return bodyInModelFrame_; }
     const CollisionShapeStorage& shapeStorage() const { return *shape_; }

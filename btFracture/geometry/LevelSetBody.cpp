@@ -5,6 +5,7 @@
 #include <btFracture/core/ClosestPoint.h>
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/geometry/MeshDecimation.h>
 #include <btFracture/geometry/internal/LevelSetGrids.h>
@@ -38,16 +39,6 @@ std::string describePoint(const Eigen::Vector3d& p) {
     std::ostringstream out;
     out << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
     return out.str();
-}
-
-// Total area of a triangle mesh's faces [m^2].
-double surfaceArea(const TriangleMesh& mesh) {
-    double area = 0.0;
-    for (const auto& t : mesh.triangles)
-        area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]])
-                          .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
-                          .norm();
-    return area;
 }
 
 // Triangles given to OpenVDB in index space (double precision, no copy of the mesh).
@@ -579,6 +570,13 @@ std::vector<int> LevelSetBody::crackIds() const {
     return {ids.begin(), ids.end()};
 }
 
+void LevelSetBody::renameCracks(const std::map<int, int>& newIdOf) {
+    for (const int id : crackIds())
+        if (newIdOf.count(id) == 0)
+            throw Error(impl_->name + ": renameCracks has no new id for crack " + std::to_string(id));
+    for (auto& t : impl_->crackTriangles) t.crackId = newIdOf.at(t.crackId);
+}
+
 double LevelSetBody::meanCurvature(const Eigen::Vector3d& p) const {
     requireFinitePoint(p, impl_->name, "meanCurvature");
     const Impl& b = *impl_;
@@ -653,9 +651,7 @@ TriangleMesh LevelSetBody::bemSourceMesh(int targetTriangles, double voxelsPerEd
     TriangleMesh mesh = meshFromGrid(*coarse, name);
     // The coarse surface cuts convex parts short (by ~3 % of a piece's volume at 3 voxels per
     // edge): offset it by the volume deficit spread over its area, at most half a coarse voxel.
-    double volume = 0.0;
-    for (const auto& t : mesh.triangles)
-        volume += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]])) / 6.0;
+    const double volume = enclosedVolume(mesh);
     const double coarseArea = surfaceArea(mesh);
     if (!(coarseArea > 0.0)) return mesh;  // nothing left at this resolution; the caller reports it
     const double wanted = (b.mass.volume - volume) / coarseArea;

@@ -21,6 +21,7 @@
 
 #include <Eigen/Core>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -115,6 +116,10 @@ public:
     void cutAlongSurface(const TriangleMesh& sheet, int crackId);
     // Ids of all cracks cut so far, sorted.
     std::vector<int> crackIds() const;
+    // Gives every crack a new id: newIdOf[old] (a fragment's carried cracks take the ids its
+    // crack mesh gives them, §5.3). Throws btfracture::Error naming the body if a crack id is
+    // missing from newIdOf.
+    void renameCracks(const std::map<int, int>& newIdOf);
 
     // Connected components of the object after the cuts (6-connected interior voxels, §5.2; the
     // "breadth-first search" of the paper, without FractureRB's one-voxel handle threshold), each with

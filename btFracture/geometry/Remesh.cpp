@@ -2,6 +2,7 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/MassProperties.h>
 #include <btFracture/core/SelfIntersection.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/geometry/ClosestPointTree.h>
@@ -40,15 +41,6 @@ constexpr int kMaxIntersectionRounds = 20;
 // iterations follow.
 constexpr double kRefinementRadius = 2.0;
 constexpr int kRefinementIterations = 5;
-
-double surfaceArea(const TriangleMesh& mesh) {
-    double area = 0.0;
-    for (const auto& tri : mesh.triangles)
-        area += 0.5 * (mesh.vertices[tri[1]] - mesh.vertices[tri[0]])
-                          .cross(mesh.vertices[tri[2]] - mesh.vertices[tri[0]])
-                          .norm();
-    return area;
-}
 
 void splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const EdgeLengthField& field) {
     // Longest edge first: its new edges are then at most sqrt(3)/2 as long as it was (median

@@ -456,6 +456,32 @@ TEST(FractureWorld, EngineErrorMakesBodyUnbreakable) {
     EXPECT_NE(messages.back().find("test engine refuses"), std::string::npos) << messages.back();
 }
 
+TEST(FractureWorld, InconsistentFragmentIsRefusedNotThrown) {
+    // An engine whose fragment claims more volume than the unbroken body (the level set's voxel
+    // error on a coarse grid did this): the event is refused with a logged error inside
+    // stepSimulation, the body stays whole, nothing escapes.
+    struct Inflating : PlaneSplitFractureEngine {
+        FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
+                                 FractureStatistics& stats) override {
+            FractureOutcome out = PlaneSplitFractureEngine::fracture(body, contacts, stats);
+            if (!out.fragments.empty()) out.fragments.front().volume = 1.05 * body.originalVolume();
+            return out;
+        }
+    };
+    Scene scene;
+    scene.world->setFractureEngine(std::make_unique<Inflating>());
+    std::vector<std::string> messages;
+    setLogSink([&](LogLevel, const std::string& m) { messages.push_back(m); });
+    EXPECT_NO_THROW(scene.step(30));
+    setLogSink(nullptr);
+    const FractureStatistics& s = scene.world->fractureStatistics();
+    EXPECT_EQ(s.engineFailures, 1u);
+    EXPECT_EQ(s.fractureEvents, 0u);
+    EXPECT_TRUE(scene.slab->isInWorld());
+    ASSERT_FALSE(messages.empty());
+    EXPECT_NE(messages.back().find("above the original body's"), std::string::npos) << messages.back();
+}
+
 TEST(FractureWorld, RemovingAFragmentHandsItToTheCaller) {
     Scene scene;
     scene.step(10);

@@ -167,8 +167,13 @@ TEST(Fragments, CutStoppedHalfwayLeavesOneFragmentWithAnIncompleteCrack) {
     EXPECT_EQ(child.crackAt({x, 0.01, 0.025}), 3);
     EXPECT_FALSE(child.isInsideObject({x, 0.01, 0.025}));
     EXPECT_TRUE(child.isInsideObject({x, 0.05, 0.025}));
+    // The fragment's crack mesh numbers its carried sheets from 0: the level set takes those ids.
+    EXPECT_THROW(child.renameCracks({{4, 0}}), Error);
+    child.renameCracks({{3, 0}});
+    EXPECT_EQ(child.crackIds(), std::vector<int>{0});
+    EXPECT_EQ(child.crackAt({x, 0.01, 0.025}), 0);
     // The crack grows through the rest of the section later (§5.3: old cracks keep growing).
-    child.cutAlongSurface(test::sheet({x, 0.05, 0.025}, {0, 0.025, 0}, {0, 0, 0.04}, "rest of crack"), 3);
+    child.cutAlongSurface(test::sheet({x, 0.05, 0.025}, {0, 0.025, 0}, {0, 0, 0.04}, "rest of crack"), 0);
     const auto halves = child.fragments(FragmentSettings());
     ASSERT_EQ(halves.size(), 2u);
     for (const Fragment& h : halves) {

@@ -233,11 +233,21 @@ Outcome simulate(const Case& c) {
     const double energyScale = std::max(kinetic0, (1.0 / w.slab->getInvMass()) * 9.81 * 2.0 * c.slabHalf.y());
     Outcome out;
     // Below the ground: more than 5 % of the slab size plus Bullet's penetration slop (about a
-    // millimetre at its default margins); during a step also by as much as the body fell in it
-    // (discrete collision: a fast fragment can end a step that far in the ground, and Bullet
-    // pushes it out over the next steps), but never at the end of the run.
+    // millimetre at its default margins); during the run also by as much as the body, or the
+    // body it broke from, ever fell in one step (discrete collision: a fast body can end a step
+    // that far in the ground, its fragments spawn where it was, and Bullet pushes them out over
+    // the next steps), but never at the end of the run.
     const double groundSlop = 0.05 * w.size + 0.001;
-    std::map<const btCollisionObject*, double> fallPerStep;  // |v_y| dt before the step, per body
+    std::map<const btCollisionObject*, double> fallPerStep;  // largest |v_y| dt, own or inherited
+    struct InheritFall : FractureListener {
+        std::map<const btCollisionObject*, double>& fall;
+        explicit InheritFall(std::map<const btCollisionObject*, double>& f) : fall(f) {}
+        void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
+                             const FractureEventInfo&) override {
+            for (const btFractureRigidBody* f : fragments) fall[f] = std::max(fall[f], fall[&parent]);
+        }
+    } inheritFall(fallPerStep);
+    w.world->addFractureListener(&inheritFall);
     auto belowGround = [&](const btRigidBody& b, double allowance) {
         return double(b.getCenterOfMassPosition().y()) < -groundSlop - allowance;
     };
@@ -254,15 +264,18 @@ Outcome simulate(const Case& c) {
                 out.problem = "non-finite body at step " + std::to_string(s);
                 break;
             }
-            const auto fell = fallPerStep.find(b);
-            const double fall = fell != fallPerStep.end() ? fell->second : std::abs(double(v.y())) * c.step;
+            const double fall = std::max(fallPerStep[b], std::abs(double(v.y())) * c.step);
             if (belowGround(*b, fall) || std::abs(p.x()) > 50 * w.size || std::abs(p.z()) > 50 * w.size ||
                 p.y() > 50 * w.size) {
                 out.inside = false;
-                out.problem =
-                    "body left the scene at step " + std::to_string(s) + ", y = " + std::to_string(p.y());
+                const auto* f = dynamic_cast<const btFractureRigidBody*>(b);
+                out.problem = (f ? f->name() : std::string("a projectile")) + " left the scene at step " +
+                              std::to_string(s) + ", y = " + std::to_string(p.y()) +
+                              " m, v_y = " + std::to_string(v.y()) + " m/s, allowance " +
+                              std::to_string(groundSlop + fall) + " m";
             }
-            fallPerStep[b] = std::abs(double(v.y())) * c.step;
+            double& deepestFall = fallPerStep[b];
+            deepestFall = std::max(deepestFall, std::abs(double(v.y())) * c.step);
         }
         if (chaser.pending && chased < c.chaseBalls &&
             w.world->fractureStatistics().steps >=
@@ -290,6 +303,7 @@ Outcome simulate(const Case& c) {
                 "body below the ground at the end, y = " + std::to_string(b->getCenterOfMassPosition().y());
         }
     }
+    w.world->removeFractureListener(&inheritFall);
     out.deepest = chaser.deepest;
     if (c.chaseBalls > 0) w.world->removeFractureListener(&chaser);
     out.events = accounting.events;
