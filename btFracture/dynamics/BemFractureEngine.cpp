@@ -430,6 +430,10 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     const double density = body.material().density();
     const Eigen::Isometry3d parentToState = s.bodyToState;
     const Eigen::Isometry3d stateToBody = parentToState.inverse();
+    // The > 95 % piece takes the state over (below), but only once the event stands: if the
+    // other pieces are all dropped, the body stays as it is and so must its state's frame.
+    std::shared_ptr<LevelSetBody> keptLevelSet;
+    Eigen::Isometry3d keptBodyToState = parentToState;
     for (Fragment& f : fragments) {
         FragmentSpec spec;
         spec.cls = specClass(f.volumeClass);
@@ -452,16 +456,8 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
         spec.inertiaAboutCom = volumeScale * density * R * f.mass.inertiaPerDensity * R.transpose();
         const Eigen::Isometry3d childToParentBody = fragmentFrame(spec.centreOfMass, spec.inertiaAboutCom);
         if (spec.cls == FragmentSpec::Class::KeepsParentSolver) {
-            // The state moves on with this fragment: its BEM, cracks and its own level set.
-            s.bodyToState = parentToState * childToParentBody;
-            s.levelSet = f.levelSet;
-            if (s.fronts) {
-                const int freed = s.fronts->freeOutside(frontQueries(*s.levelSet));
-                if (freed > 0)
-                    logf(LogLevel::Info, body.name(), ": ", freed,
-                         " crack front markers outside the kept fragment follow their coarse front freely");
-            }
-            s.bemSource = TriangleMesh();  // the solver is kept; a rebuild would start from the level set
+            keptBodyToState = parentToState * childToParentBody;
+            keptLevelSet = f.levelSet;
         } else if (spec.cls == FragmentSpec::Class::Breakable) {
             auto carried = std::make_unique<BemFractureState>();
             carried->bodyToState = parentToState * childToParentBody;
@@ -478,6 +474,18 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     if (outcome.fragments.size() < 2) {
         outcome.fragments.clear();
         return outcome;
+    }
+    if (keptLevelSet) {
+        // The state moves on with the kept fragment: its BEM, cracks and its own level set.
+        s.bodyToState = keptBodyToState;
+        s.levelSet = keptLevelSet;
+        if (s.fronts) {
+            const int freed = s.fronts->freeOutside(frontQueries(*s.levelSet));
+            if (freed > 0)
+                logf(LogLevel::Info, body.name(), ": ", freed,
+                     " crack front markers outside the kept fragment follow their coarse front freely");
+        }
+        s.bemSource = TriangleMesh();  // the solver is kept; a rebuild would start from the level set
     }
     logf(LogLevel::Info, body.name(), ": ", report.seeds, " new cracks, ", report.steps.size(), " steps, ",
          outcome.fragments.size(), " fragments");
