@@ -135,6 +135,7 @@ void CrackFronts::addSheet(int sheet, const CoarseFront& front, const FrontQueri
         chains.push_back(std::move(chain));
     }
     sheets_[sheet] = std::move(chains);
+    movedCoarseNodes_.erase(sheet);
 }
 
 void CrackFronts::addSurface(int sheet, const TriangleMesh& triangles) {
@@ -224,7 +225,6 @@ int CrackFronts::sweptTriangles() const {
 FrontAdvanceResult CrackFronts::advance(const std::map<int, CoarseFront>& fronts,
                                         const FrontQueries& queries) {
     std::map<int, std::vector<Steps>> steps;
-    std::map<int, std::set<int>> moving;  // per sheet: coarse nodes with a marker about to move
     for (const auto& [sheet, front] : fronts) {
         const auto found = sheets_.find(sheet);
         if (found == sheets_.end()) continue;
@@ -269,15 +269,20 @@ FrontAdvanceResult CrackFronts::advance(const std::map<int, CoarseFront>& fronts
             }
             for (std::size_t i = 0; i < n; ++i)
                 if (!chain.markers[i].arrested && smooth[i].norm() > 0.0)
-                    moving[sheet].insert(chain.markers[i].coarseNode);
+                    movedCoarseNodes_[sheet].insert(chain.markers[i].coarseNode);
             sheetSteps.push_back(std::move(smooth));
         }
     }
     FrontAdvanceResult result = sweep(steps, queries, false);
-    // Arrest feedback: a coarse node whose markers were moving and all stopped stops too (one
+    // Arrest feedback: a coarse node whose markers once moved and now all stopped stops too (one
     // whose markers all started outside, e.g. on a seed poking through the surface, moves on).
-    for (const auto& [sheet, nodes] : moving) {
+    // "Once", not "in this advance": a node's last moving marker may have passed to the
+    // neighbouring node (nearest coarse edge half) after its own markers stopped. Only nodes
+    // still on the coarse front count (growth replaces a front node by a new one).
+    for (const auto& [sheet, nodes] : movedCoarseNodes_) {
         const auto found = sheets_.find(sheet);
+        const auto front = fronts.find(sheet);
+        if (found == sheets_.end() || front == fronts.end()) continue;
         std::map<int, std::pair<int, int>> count;  // coarse node -> (markers, arrested)
         for (const MarkerChain& chain : found->second)
             for (const FrontMarker& m : chain.markers) {
@@ -287,7 +292,8 @@ FrontAdvanceResult CrackFronts::advance(const std::map<int, CoarseFront>& fronts
             }
         for (const int node : nodes) {
             const auto c = count.find(node);
-            if (c != count.end() && c->second.first > 0 && c->second.first == c->second.second)
+            if (front->second.position.count(node) > 0 && c != count.end() && c->second.first > 0 &&
+                c->second.first == c->second.second)
                 result.arrestedCoarseNodes.insert(node);
         }
     }

@@ -64,7 +64,7 @@ struct FrontAdvanceResult {
     int leftBody = 0;                   //   at the body's surface
     int metCrack = 0;                   //   in a crack already cut (FrontQueries::crackAt)
     int metSheet = 0;                   //   at another sheet's swept surface (extend() only)
-    std::set<int> arrestedCoarseNodes;  // coarse nodes that moved but whose markers all stopped
+    std::set<int> arrestedCoarseNodes;  // coarse nodes that once moved and whose markers all stopped
 };
 
 class CrackFronts {
@@ -120,6 +120,8 @@ private:
 
     double spacing_;
     std::map<int, std::vector<MarkerChain>> sheets_;
+    // Per sheet: coarse nodes that ever drove a moving marker (only those are reported arrested).
+    std::map<int, std::set<int>> movedCoarseNodes_;
     // Swept triangles per sheet and their spatial hash (cells of 2 spacings: cell key -> per
     // sheet, its triangles); the transient pair holds the sub-step strips of one advance.
     std::map<int, TriangleMesh> swept_, transient_;
