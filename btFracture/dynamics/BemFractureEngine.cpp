@@ -139,19 +139,19 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
     };
     std::vector<Source> sources;
     if (s.bemSource.triangles.empty() && s.levelSet) {
-        for (double voxelsPerEdge : {kBemSourceVoxelsPerEdge, 0.5 * kBemSourceVoxelsPerEdge}) {
-            sources.push_back(
-                {voxelsPerEdge == kBemSourceVoxelsPerEdge ? "its level-set surface"
-                                                          : "its level-set surface at half resolution",
-                 [&s, &body, &b, voxelsPerEdge] {
-                     const Timer timer;
-                     TriangleMesh m = s.levelSet->bemSourceMesh(b.bemTriangleTarget, voxelsPerEdge);
-                     logf(LogLevel::Info, body.name(), ": BEM source of ", m.triangles.size(),
-                          " triangles from its level set (", voxelsPerEdge, " voxels per edge) in ",
-                          timer.seconds(), " s");
-                     return m;
-                 }});
-        }
+        const auto fromLevelSet = [&s, &body, &b](double voxelsPerEdge) {
+            return [&s, &body, &b, voxelsPerEdge] {
+                const Timer timer;
+                TriangleMesh m = s.levelSet->bemSourceMesh(b.bemTriangleTarget, voxelsPerEdge);
+                logf(LogLevel::Info, body.name(), ": BEM source of ", m.triangles.size(),
+                     " triangles from its level set (", voxelsPerEdge, " voxels per edge) in ",
+                     timer.seconds(), " s");
+                return m;
+            };
+        };
+        sources.push_back({"its level-set surface", fromLevelSet(kBemSourceVoxelsPerEdge)});
+        sources.push_back(
+            {"its level-set surface at half resolution", fromLevelSet(0.5 * kBemSourceVoxelsPerEdge)});
         sources.push_back({"its collision mesh", [&s, &body] {
                                TriangleMesh collision = body.mesh();
                                for (auto& v : collision.vertices) v = s.bodyToState * v;
