@@ -48,7 +48,8 @@ std::string meshName(const TriangleMesh& mesh) {
 }
 
 // A btConvexHullShape whose hull is the hull of `points` shrunk by `margin` (clamped by Bullet
-// to a quarter of the inradius); returns its collision geometry (shrunk points + actual margin).
+// to a quarter of the inradius); returns its collision geometry (shrunk points + actual margin),
+// or nullptr when the hull is flat or degenerate (fewer than 4 vertices).
 std::unique_ptr<btConvexHullShape> shrunkHull(const std::vector<Eigen::Vector3d>& points, double margin,
                                               const std::string& name, ConvexPolytope& piece) {
     std::vector<double> coords;
@@ -57,12 +58,7 @@ std::unique_ptr<btConvexHullShape> shrunkHull(const std::vector<Eigen::Vector3d>
     btConvexHullComputer hull;
     const double shrink = hull.compute(coords.data(), 3 * static_cast<int>(sizeof(double)),
                                        static_cast<int>(points.size()), btScalar(margin), btScalar(0.25));
-    if (hull.vertices.size() < 4) {
-        std::ostringstream out;
-        out << name << ": convex hull of " << points.size() << " points has " << hull.vertices.size()
-            << " vertices (flat or degenerate piece)";
-        throw Error(out.str());
-    }
+    if (hull.vertices.size() < 4) return nullptr;
     // Bullet clamps the shrink for thin pieces; the margin then follows the shrink actually
     // applied so that hull + margin still matches the input.
     const double actualMargin = shrink > 0.0 ? std::min(shrink, margin) : 0.0;
@@ -149,45 +145,64 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
     storage->kind_ = kind;
     storage->margin_ = margin;
     CollisionShapeStorage::Impl& impl = *storage->impl_;
+    // A btGImpactMeshShape over the mesh (any closed mesh, convex or not).
+    const auto buildGImpactMesh = [&mesh, margin, &impl] {
+        for (const auto& v : mesh.vertices)
+            impl.vertices.insert(impl.vertices.end(), {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())});
+        for (const auto& t : mesh.triangles) impl.indices.insert(impl.indices.end(), {t[0], t[1], t[2]});
+        impl.meshInterface = std::make_unique<btTriangleIndexVertexArray>(
+            static_cast<int>(mesh.triangles.size()), impl.indices.data(), 3 * static_cast<int>(sizeof(int)),
+            static_cast<int>(mesh.vertices.size()), impl.vertices.data(),
+            3 * static_cast<int>(sizeof(btScalar)));
+        auto gimpact = std::make_unique<btGImpactMeshShape>(impl.meshInterface.get());
+        gimpact->setMargin(btScalar(margin));
+        gimpact->updateBound();
+        impl.root = std::move(gimpact);
+    };
     switch (kind) {
         case CollisionShapeKind::ConvexHull: {
             ConvexPolytope piece;
             impl.root = shrunkHull(mesh.vertices, margin, name, piece);
+            if (!impl.root)
+                throw Error(name + ": convex hull of " + std::to_string(mesh.vertices.size()) +
+                            " points is flat or degenerate");
             storage->pieces_.push_back(std::move(piece));
             break;
         }
         case CollisionShapeKind::ConvexDecomposition: {
             const auto clusters = decompose(mesh, options);
-            if (clusters.empty()) throw Error(name + ": HACD convex decomposition returned no usable piece");
             auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(clusters.size()));
             btTransform identity;
             identity.setIdentity();
+            int flat = 0;
             for (std::size_t c = 0; c < clusters.size(); ++c) {
                 ConvexPolytope piece;
-                impl.children.push_back(
-                    shrunkHull(clusters[c], margin, name + " piece " + std::to_string(c), piece));
+                auto hull = shrunkHull(clusters[c], margin, name + " piece " + std::to_string(c), piece);
+                if (!hull) {  // a flat cluster holds no volume: leaving it out loses nothing
+                    ++flat;
+                    continue;
+                }
+                impl.children.push_back(std::move(hull));
                 compound->addChildShape(identity, impl.children.back().get());
                 storage->pieces_.push_back(std::move(piece));
+            }
+            if (flat > 0)
+                logf(LogLevel::Info, name, ": ", flat, " of ", clusters.size(),
+                     " convex decomposition pieces are flat and left out");
+            if (impl.children.empty()) {
+                logf(LogLevel::Info, name,
+                     ": no convex decomposition piece has volume; using a GImpact mesh shape");
+                storage->kind_ = CollisionShapeKind::GImpactMesh;
+                buildGImpactMesh();
+                break;
             }
             compound->setMargin(btScalar(margin));
             impl.root = std::move(compound);
             break;
         }
-        case CollisionShapeKind::GImpactMesh: {
-            for (const auto& v : mesh.vertices)
-                impl.vertices.insert(impl.vertices.end(),
-                                     {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())});
-            for (const auto& t : mesh.triangles) impl.indices.insert(impl.indices.end(), {t[0], t[1], t[2]});
-            impl.meshInterface = std::make_unique<btTriangleIndexVertexArray>(
-                static_cast<int>(mesh.triangles.size()), impl.indices.data(),
-                3 * static_cast<int>(sizeof(int)), static_cast<int>(mesh.vertices.size()),
-                impl.vertices.data(), 3 * static_cast<int>(sizeof(btScalar)));
-            auto gimpact = std::make_unique<btGImpactMeshShape>(impl.meshInterface.get());
-            gimpact->setMargin(btScalar(margin));
-            gimpact->updateBound();
-            impl.root = std::move(gimpact);
+        case CollisionShapeKind::GImpactMesh:
+            buildGImpactMesh();
             break;
-        }
     }
     storage->shape_ = impl.root.get();
     return storage;
