@@ -5,12 +5,15 @@
 // Each crack slab is a numerical gap 1.7 voxels thick. A fragment's own level set puts its
 // surface back on the crack sheet itself: near a crack (within the narrow band), with s the
 // signed distance to the nearest sheet triangle along its normal n, and L+ / L- the fragments
-// found 2-3 voxels along +n / -n,
+// found 2-5 voxels along +n / -n,
 //   - L+ != L- (the crack separates here): phi_F = max(phi_solid, -s) for F = L+ and
 //     max(phi_solid, +s) for F = L-, so the slab's material is split between the two sides;
 //   - L+ == L- == F (the crack ends inside F, "incomplete"): phi_F = phi_solid, the slab is
-//     filled for mass, collision and BEM surface, and the crack is carried into F's own body.
-// Elsewhere phi_F is the object's distance inside F and positive outside.
+//     filled for mass, collision and BEM surface, and the crack is carried into F's own body;
+//   - only one of them found (the sheet meets the surface or another slab there): that fragment
+//     takes the whole voxel, phi_F = phi_solid.
+// Elsewhere phi_F is the object's distance inside F and positive outside; slab voxels that no
+// crack voxel gives to F are outside F (each voxel's material counts for one fragment only).
 #include <btFracture/geometry/LevelSetBody.h>
 
 #include <btFracture/core/ClosestPoint.h>
@@ -37,12 +40,16 @@ namespace {
 using namespace levelset;
 using openvdb::BoolGrid;
 
+// Where a crack voxel looks for the fragment on either side of its sheet [voxels from the sheet]:
+// beyond the slab (1.7 voxels) and, where sheets cross or run close, beyond the neighbour's slab.
+constexpr double kSideProbes[] = {2.0, 3.0, 4.0, 5.0};
+
 // A voxel within the narrow band of a crack sheet, with the fragments on either side.
 struct CrackVoxel {
     Coord ijk;
     double signedDistance;  // to the nearest sheet triangle, along its normal [m]
     int triangle;           // index into the body's crack triangles
-    int plus, minus;        // fragment labels 2-3 voxels along +n / -n, -1 if none
+    int plus, minus;        // fragment labels kSideProbes along +n / -n, -1 if none
 };
 
 struct Component {
@@ -149,9 +156,9 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
             const Eigen::Vector3d offset = x - closestPointAndFeature(x, tri.a, tri.b, tri.c).point;
             const double s = offset.dot(n) >= 0.0 ? offset.norm() : -offset.norm();
             CrackVoxel v{ijk, s, t, -1, -1};
-            for (double probe : {2.0, 3.0})
+            for (double probe : kSideProbes)
                 if (v.plus < 0) v.plus = labelAt(x + (probe * dx - s) * n);
-            for (double probe : {2.0, 3.0})
+            for (double probe : kSideProbes)
                 if (v.minus < 0) v.minus = labelAt(x - (probe * dx + s) * n);
             if (v.plus >= 0 || v.minus >= 0) crackVoxels.push_back(v);
         }
@@ -192,8 +199,11 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
             const Coord ijk = it.getCoord();
             const float o = objectAcc.getValue(ijk);
             const int label = labelAcc.getValue(ijk);
-            // In (or beside) another fragment: outside this one (crack voxels below refine this).
-            if (label == k || (label < 0 && o >= 0.0f)) {
+            // In (or beside) another fragment, or in a crack slab: outside this one (crack voxels
+            // below refine this). A slab voxel's object distance is below a voxel, so kept as it
+            // is it would count as partly inside every fragment whose band reaches it.
+            const bool inSlab = crackAcc.getValue(ijk) < 0.0f;
+            if (label == k || (label < 0 && o >= 0.0f && !inSlab)) {
                 assign(ijk, o);
             } else {
                 assign(ijk, background);
@@ -210,6 +220,9 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
                 filled.push_back(i);
                 if (crackAcc.getValue(v.ijk) < 0.0f && solid < 0.0f)
                     incomplete.insert(body.crackTriangles[v.triangle].crackId);
+            } else if (v.plus < 0 || v.minus < 0) {  // no fragment on the other side: all of it here
+                assign(v.ijk, solid);
+                filled.push_back(i);
             } else {
                 const double side = v.plus == k ? -v.signedDistance : v.signedDistance;
                 assign(v.ijk, std::max(solid, static_cast<float>(side)));
