@@ -28,6 +28,7 @@ struct SceneOptions {
     double ballSpeed = 10.0;            // [m/s], downwards
     double ballX = 0.05, ballZ = 0.03;  // where the ball hits the slab's top face [m]
     int maxRefractureDepth = 2;
+    int bemTriangleTarget = FractureBodySettings().bemTriangleTarget;  // the slab's BEM resolution
     bool withEngine = true;
     bool physicalEngine = false;  // BemFractureEngine instead of the plane-split stand-in
     Eigen::Vector3d slabHalfExtents = Eigen::Vector3d(0.2, 0.025, 0.2);  // [m]
@@ -95,6 +96,7 @@ public:
         FractureBodySettings settings;
         settings.impulseThreshold = options.impulseThreshold;
         settings.maxRefractureDepth = options.maxRefractureDepth;
+        settings.bemTriangleTarget = options.bemTriangleTarget;
         const btBoxShape slabShape(btVector3(btScalar(options.slabHalfExtents.x()),
                                              btScalar(options.slabHalfExtents.y()),
                                              btScalar(options.slabHalfExtents.z())));
