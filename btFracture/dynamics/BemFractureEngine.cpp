@@ -4,6 +4,7 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
+#include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/SelfIntersection.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/TractionBalance.h>
@@ -185,10 +186,10 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
             continue;
         }
         TriangleMesh candidate = remeshForBem(source, sources[k].target, remesh);
-        const std::size_t left = findSelfIntersections(candidate).size();
-        if (left > 0) {
+        const MeshDefects defects = inspectMesh(candidate);
+        if (!defects.isClosedSolid()) {
             problems += std::string(problems.empty() ? "" : "; ") + "the BEM remesh of " + sources[k].what +
-                        " has " + std::to_string(left) + " self-intersecting triangle pairs";
+                        " has " + defects.describe();
             continue;
         }
         if (k > 0)
