@@ -17,8 +17,11 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <map>
 #include <queue>
 #include <sstream>
 #include <utility>
@@ -193,6 +196,45 @@ void requireValidArguments(const std::string& source, int targetTriangles, const
                     std::to_string(options.smoothingStep));
 }
 
+// Drops the edge-connected components of fewer than 4 triangles (no closed surface has fewer: a
+// speck of the input that the collapses shrank to two coincident zero-area triangles) and the
+// vertices only they used; returns how many triangles went.
+int dropSpecks(TriangleMesh& mesh) {
+    const int n = static_cast<int>(mesh.triangles.size());
+    std::vector<int> parent(n);
+    for (int i = 0; i < n; ++i) parent[i] = i;
+    const std::function<int(int)> find = [&](int i) {
+        return parent[i] == i ? i : parent[i] = find(parent[i]);
+    };
+    std::map<std::pair<int, int>, int> firstAtEdge;
+    for (int t = 0; t < n; ++t)
+        for (int k = 0; k < 3; ++k) {
+            const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+            const auto [it, fresh] = firstAtEdge.emplace(std::minmax(a, b), t);
+            if (!fresh) parent[find(t)] = find(it->second);
+        }
+    std::map<int, int> size;
+    for (int t = 0; t < n; ++t) ++size[find(t)];
+    std::vector<std::array<int, 3>> kept;
+    for (int t = 0; t < n; ++t)
+        if (size[find(t)] >= 4) kept.push_back(mesh.triangles[t]);
+    const int dropped = n - static_cast<int>(kept.size());
+    if (dropped == 0) return 0;
+    std::vector<int> newIndex(mesh.vertices.size(), -1);
+    std::vector<Eigen::Vector3d> vertices;
+    for (auto& tri : kept)
+        for (int& v : tri) {
+            if (newIndex[v] < 0) {
+                newIndex[v] = static_cast<int>(vertices.size());
+                vertices.push_back(mesh.vertices[v]);
+            }
+            v = newIndex[v];
+        }
+    mesh.vertices = std::move(vertices);
+    mesh.triangles = std::move(kept);
+    return dropped;
+}
+
 }  // namespace
 
 TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const RemeshOptions& options) {
@@ -261,6 +303,10 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
     }
     mesh.compact();
     TriangleMesh output = mesh.toTriangleMesh(source + " (BEM remesh)");
+    if (const int specks = dropSpecks(output); specks > 0)
+        logf(
+            LogLevel::Info, source, ": ", specks,
+            " triangles of components too small to enclose anything (< 4 triangles) dropped from the remesh");
 
     const MeshQuality quality = measureQuality(output, options.minAngleDegrees);
     logf(LogLevel::Info, source, ": remeshed ", input.triangles.size(), " -> ", output.triangles.size(),
