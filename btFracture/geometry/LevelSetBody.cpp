@@ -11,7 +11,6 @@
 #include <btFracture/geometry/internal/LevelSetGrids.h>
 
 #include <openvdb/io/File.h>
-#include <openvdb/tools/Composite.h>
 #include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/VolumeToMesh.h>
 #include <Eigen/Geometry>
@@ -445,15 +444,24 @@ TriangleMesh collisionMeshFromGrid(const FloatGrid& phi, int targetTriangles, co
 
 using namespace levelset;
 
+void levelset::carveSlab(FloatGrid& object, const FloatGrid& solid, const FloatGrid& slab) {
+    const float background = solid.background();
+    auto solidAcc = solid.getConstAccessor();
+    auto objectAcc = object.getAccessor();
+    for (auto it = slab.cbeginValueOn(); it; ++it) {
+        const Coord ijk = it.getCoord();
+        if (!(solidAcc.getValue(ijk) < background)) continue;
+        const float carved = -*it;
+        if (carved > objectAcc.getValue(ijk)) objectAcc.setValueOn(ijk, std::min(carved, background));
+    }
+}
+
 void LevelSetBody::Impl::rebuildObject() {
     openvdb::CoordBBox box = solid->evalActiveVoxelBoundingBox();
     boundingDiagonal =
         box.empty() ? 0.0 : (voxelCentre(box.max(), voxelSize) - voxelCentre(box.min(), voxelSize)).norm();
-    if (crack && crack->activeVoxelCount() > 0) {
-        object = serially([&] { return openvdb::tools::csgDifferenceCopy(*solid, *crack); });
-    } else {
-        object = solid->deepCopy();
-    }
+    object = solid->deepCopy();
+    if (crack) carveSlab(*object, *solid, *crack);
 }
 
 double LevelSetBody::defaultVoxelSize(const TriangleMesh& mesh) {
@@ -748,7 +756,7 @@ void LevelSetBody::cutAlongSurface(const TriangleMesh& sheet, int crackId) {
             triangleAcc.setValueOn(ijk, base + nearestAcc.getValue(ijk));
         }
     }
-    serially([&] { openvdb::tools::csgDifference(*b.object, *slab); });
+    carveSlab(*b.object, *b.solid, *slab);
     logf(LogLevel::Debug, source, ": crack ", crackId, " cut with ", kept.triangles.size(), " triangles, ",
          slabVoxels, " slab voxels");
 }
