@@ -5,7 +5,6 @@
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
-#include <btFracture/core/SelfIntersection.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/TractionBalance.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
@@ -177,19 +176,28 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
     remesh.maxRefinements = 1;
     TriangleMesh bem;
     std::string problems;
+    // Any source that fails (defects, or an error while it is built or remeshed) is noted and
+    // the next one tried.
     for (std::size_t k = 0; k < sources.size() && bem.triangles.empty(); ++k) {
-        TriangleMesh source = sources[k].make();
-        const std::size_t crossings = findSelfIntersections(source).size();
-        if (crossings > 0) {
-            problems += std::string(problems.empty() ? "" : "; ") + sources[k].what + " has " +
-                        std::to_string(crossings) + " self-intersecting triangle pairs";
+        const auto note = [&](const std::string& problem) {
+            problems += std::string(problems.empty() ? "" : "; ") + sources[k].what + problem;
+        };
+        TriangleMesh source, candidate;
+        try {
+            source = sources[k].make();
+            const MeshDefects sourceDefects = inspectMesh(source);
+            if (!sourceDefects.isClosedSolid()) {
+                note(" has " + sourceDefects.describe());
+                continue;
+            }
+            candidate = remeshForBem(source, sources[k].target, remesh);
+        } catch (const Error& e) {
+            note(": " + std::string(e.what()));
             continue;
         }
-        TriangleMesh candidate = remeshForBem(source, sources[k].target, remesh);
         const MeshDefects defects = inspectMesh(candidate);
         if (!defects.isClosedSolid()) {
-            problems += std::string(problems.empty() ? "" : "; ") + "the BEM remesh of " + sources[k].what +
-                        " has " + defects.describe();
+            note(": its BEM remesh has " + defects.describe());
             continue;
         }
         if (k > 0)

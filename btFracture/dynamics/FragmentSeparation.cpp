@@ -33,6 +33,13 @@ ConvexPolytope shifted(const ConvexPolytope& piece, const Eigen::Vector3d& offse
     return out;
 }
 
+// Moving the body by `push` would drive it into static geometry it touches.
+bool blockedAlong(const SeparationBody& body, const Eigen::Vector3d& push) {
+    for (const auto& n : body.blockedDirections)
+        if (push.dot(n) < -1e-9 * push.norm()) return true;
+    return false;
+}
+
 }  // namespace
 
 SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies,
@@ -62,11 +69,14 @@ SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies,
                         result.remainingDepth = std::max(result.remainingDepth, pen.depth);
                         logf(LogLevel::Debug, "fragment separation: bodies ", i, " and ", j, " overlap by ",
                              pen.depth, " m along (", pen.direction.transpose(), ")");
-                        if (capped[i] && capped[j]) continue;
+                        const bool freeI = !capped[i] && !blockedAlong(bodies[i], -pen.direction);
+                        const bool freeJ = !capped[j] && !blockedAlong(bodies[j], pen.direction);
+                        if (!freeI && !freeJ) continue;
                         const double mi = bodies[i].mass, mj = bodies[j].mass;
-                        // Both move when free; a capped body stays, the other takes the whole push.
-                        double shareI = capped[i] ? 0.0 : mj / (mi + mj);
-                        double shareJ = capped[j] ? 0.0 : mi / (mi + mj);
+                        // Both move when free; a capped or blocked body stays, the other takes the
+                        // whole push.
+                        double shareI = freeI ? mj / (mi + mj) : 0.0;
+                        double shareJ = freeJ ? mi / (mi + mj) : 0.0;
                         const double total = shareI + shareJ;
                         shareI /= total;
                         shareJ /= total;

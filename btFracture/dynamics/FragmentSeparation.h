@@ -3,7 +3,8 @@
 // take the parent's place; overlapping shapes would make the replayed step push them apart
 // violently, "popping"). Each overlap found by libccd (geometry/ConvexPenetration.h) is removed
 // by translating the two fragments apart along the penetration direction, split in inverse
-// proportion to their masses so that their common centre of mass does not move. Positions only:
+// proportion to their masses so that their common centre of mass does not move (unless one of
+// them is blocked by static geometry, then the other moves alone). Positions only:
 // the caller re-derives velocities from the parent's rigid motion.
 #include <btFracture/geometry/ConvexPenetration.h>
 
@@ -17,6 +18,9 @@ struct SeparationBody {
     std::vector<ConvexPolytope> pieces;  // convex collision pieces, world frame [m]
     double mass = 0.0;                   // [kg], > 0
     double length = 0.0;                 // characteristic length [m], > 0
+    // Unit normals of static contacts (ground, walls), pointing into the body: it is never
+    // pushed against them; the other body of an overlap then takes the whole push.
+    std::vector<Eigen::Vector3d> blockedDirections;
 };
 
 struct SeparationOptions {

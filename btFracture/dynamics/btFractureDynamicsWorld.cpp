@@ -42,6 +42,31 @@ bool wasSolved(const btPersistentManifold& manifold) {
     return (a->isActive() || b->isActive()) && a->hasContactResponse() && b->hasContactResponse();
 }
 
+// Unit normals of the body's contacts with static or kinematic objects, pointing into the body
+// (duplicates removed): its fragments are not separated against them, i.e. into the ground.
+std::vector<Eigen::Vector3d> staticContactNormals(btDispatcher& dispatcher, const btCollisionObject& body) {
+    std::vector<Eigen::Vector3d> normals;
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+        const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+        const bool isBody0 = manifold->getBody0() == &body;
+        if (!isBody0 && manifold->getBody1() != &body) continue;
+        const btCollisionObject* other = isBody0 ? manifold->getBody1() : manifold->getBody0();
+        if (!other->isStaticOrKinematicObject() || !wasSolved(*manifold)) continue;
+        for (int k = 0; k < manifold->getNumContacts(); ++k) {
+            const btManifoldPoint& point = manifold->getContactPoint(k);
+            if (point.getDistance() > manifold->getContactProcessingThreshold()) continue;
+            // Bullet's normal points from body1 to body0.
+            const Eigen::Vector3d n = toEigen(isBody0 ? point.m_normalWorldOnB : -point.m_normalWorldOnB);
+            if (!(n.norm() > 0.5)) continue;
+            const Eigen::Vector3d unit = n.normalized();
+            if (std::none_of(normals.begin(), normals.end(),
+                             [&](const Eigen::Vector3d& seen) { return seen.dot(unit) > 1.0 - 1e-9; }))
+                normals.push_back(unit);
+        }
+    }
+    return normals;
+}
+
 const char* className(FragmentSpec::Class cls) {
     switch (cls) {
         case FragmentSpec::Class::ConvexHull:
@@ -202,6 +227,7 @@ struct btFractureDynamicsWorld::Event {
     FractureOutcome outcome;
     FractureEventInfo info;
     std::vector<btFractureRigidBody*> fragments;
+    std::vector<Eigen::Vector3d> staticNormals;  // the parent's contacts with static geometry
 };
 
 btFractureDynamicsWorld::btFractureDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* pairCache,
@@ -428,7 +454,7 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             body->setSettings(settings);
             continue;
         }
-        Event event{body, {}, {}, {}};
+        Event event{body, {}, {}, {}, {}};
         try {
             if (!buildContacts(*body, contacts)) continue;
             event.info.step = stats_.steps;
@@ -453,33 +479,35 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             body->setSettings(settings);
             continue;
         }
-        if (!event.outcome.fragments.empty()) events.push_back(std::move(event));
+        if (event.outcome.fragments.empty()) continue;
+        event.staticNormals = staticContactNormals(*m_dispatcher1, *body);
+        events.push_back(std::move(event));
     }
     if (events.empty()) return;
 
     Timer swapTimer;
     snapshot_.restore();
-    std::vector<btFractureRigidBody*> spawned;
     for (Event& event : events) {
         event.fragments = spawnFragments(*event.parent, event.outcome);
         ++stats_.fractureEvents;
         stats_.fragmentsSpawned += event.fragments.size();
-        spawned.insert(spawned.end(), event.fragments.begin(), event.fragments.end());
     }
 
     // Push overlapping fragments apart, then give them the parent's rigid motion (momentum-exact).
     std::vector<SeparationBody> separation;
-    for (btFractureRigidBody* f : spawned) {
-        SeparationBody s;
-        s.mass = 1.0 / double(f->getInvMass());
-        s.length = f->characteristicLength();
-        for (const ConvexPolytope& piece : f->shapeStorage().convexPieces()) {
-            ConvexPolytope world = piece;
-            for (auto& p : world.points) p = toEigen(f->getWorldTransform() * toBullet(p));
-            s.pieces.push_back(std::move(world));
+    for (const Event& event : events)
+        for (btFractureRigidBody* f : event.fragments) {
+            SeparationBody s;
+            s.blockedDirections = event.staticNormals;
+            s.mass = 1.0 / double(f->getInvMass());
+            s.length = f->characteristicLength();
+            for (const ConvexPolytope& piece : f->shapeStorage().convexPieces()) {
+                ConvexPolytope world = piece;
+                for (auto& p : world.points) p = toEigen(f->getWorldTransform() * toBullet(p));
+                s.pieces.push_back(std::move(world));
+            }
+            separation.push_back(std::move(s));
         }
-        separation.push_back(std::move(s));
-    }
     const SeparationResult pushes = separateOverlaps(separation);
     std::size_t index = 0;
     for (Event& event : events) {

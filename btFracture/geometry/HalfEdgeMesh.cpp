@@ -110,6 +110,11 @@ void HalfEdgeMesh::compact() {
     twin_ = std::move(twins);
 }
 
+void HalfEdgeMesh::throwOpenRing(int v) const {
+    throw Error("half-edge mesh: the ring of halfedges around vertex " + std::to_string(v) +
+                " does not close (connectivity corrupted by an edit)");
+}
+
 int HalfEdgeMesh::valence(int v) const {
     int n = 0;
     forEachOutgoing(v, [&](int) { ++n; });

@@ -71,9 +71,11 @@ public:
     void forEachOutgoing(int v, F&& f) const {
         const int first = outgoing_[v];
         int h = first;
+        int steps = 0;
         do {
             f(h);
             h = nextOutgoing(h);
+            if (++steps > halfedgeSlots()) throwOpenRing(v);  // an edit broke the ring: never loop
         } while (h != first);
     }
 
@@ -107,6 +109,7 @@ public:
     int splitEdge(int h, const Eigen::Vector3d& p);
 
 private:
+    [[noreturn]] void throwOpenRing(int v) const;
     void link(int h, int g) {
         twin_[h] = g;
         twin_[g] = h;

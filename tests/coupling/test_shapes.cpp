@@ -89,7 +89,7 @@ TEST(CollisionShapes, NonConvexBodiesRestStablyOnTheGround) {
 
 TEST(FragmentSeparation, OverlappingBoxesArePushedApartAboutTheirCentreOfMass) {
     const auto cube = makeBox(Eigen::Vector3d(0.5, 0.5, 0.5), 0.0, "cube").vertices;
-    SeparationBody a{{ConvexPolytope{cube, 0.0}}, 1.0, 1.0};
+    SeparationBody a{{ConvexPolytope{cube, 0.0}}, 1.0, 1.0, {}};
     SeparationBody b = a;
     for (auto& p : b.pieces[0].points) p.x() += 0.95;  // 5 cm overlap
     b.mass = 3.0;
@@ -104,4 +104,24 @@ TEST(FragmentSeparation, OverlappingBoxesArePushedApartAboutTheirCentreOfMass) {
     const SeparationResult none = separateOverlaps({a, b});
     EXPECT_EQ(none.overlapsResolved, 0);
     EXPECT_EQ(none.largestPush, 0.0);
+}
+
+// A fragment resting on static geometry is never pushed into it: the other one moves alone. This
+// is what sank slab fragments into the ground (flat face on flat face: 3 cm below the plane).
+TEST(FragmentSeparation, BodyOnStaticGeometryIsNotPushedIntoIt) {
+    const auto cube = makeBox(Eigen::Vector3d(0.5, 0.5, 0.5), 0.0, "cube").vertices;
+    SeparationBody below{{ConvexPolytope{cube, 0.0}}, 3.0, 1.0, {Eigen::Vector3d(0, 1, 0)}};  // on the ground
+    SeparationBody above = below;
+    above.mass = 1.0;
+    above.blockedDirections.clear();
+    for (auto& p : above.pieces[0].points) p.y() += 0.9;  // 10 cm overlap, the shallowest along y
+    const SeparationResult r = separateOverlaps({below, above});
+    EXPECT_EQ(r.pushes[0], Eigen::Vector3d::Zero());
+    EXPECT_NEAR(r.pushes[1].y(), 0.1, 1e-6);
+    EXPECT_NEAR(r.pushes[1].x(), 0.0, 1e-9);
+    // Blocked on both sides: left to the solver.
+    above.blockedDirections = {Eigen::Vector3d(0, -1, 0)};
+    const SeparationResult stuck = separateOverlaps({below, above});
+    EXPECT_EQ(stuck.largestPush, 0.0);
+    EXPECT_NEAR(stuck.remainingDepth, 0.1, 1e-6);
 }
