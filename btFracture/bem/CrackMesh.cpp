@@ -1,12 +1,12 @@
 #include <btFracture/bem/CrackMesh.h>
 
 #include <btFracture/core/Error.h>
+#include <btFracture/core/UnionFind.h>
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <sstream>
 
 namespace btfracture {
@@ -89,12 +89,7 @@ std::vector<int> CrackMesh::refreshUnknowns() {
         }
     std::vector<char> onFront(nodes_.size(), 0);
     frontEdges_.clear();
-    std::vector<int> parent(triangles_.size());
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](int i) {
-        while (parent[i] != i) i = parent[i] = parent[parent[i]];
-        return i;
-    };
+    UnionFind sheets(static_cast<int>(triangles_.size()));
     for (const auto& [edge, uses] : edges) {
         if (uses.size() > 2 || (uses.size() == 2 && uses[0].second == uses[1].second)) {
             std::ostringstream msg;
@@ -110,7 +105,7 @@ std::vector<int> CrackMesh::refreshUnknowns() {
             frontEdges_.push_back(
                 {forward ? edge.first : edge.second, forward ? edge.second : edge.first, t});
         } else {
-            parent[find(uses[0].first)] = find(uses[1].first);
+            sheets.unite(uses[0].first, uses[1].first);
         }
     }
     // Sheets (edge-connected components) and their areas.
@@ -118,7 +113,7 @@ std::vector<int> CrackMesh::refreshUnknowns() {
     std::map<int, int> sheetOfRoot;
     sheetAreas_.clear();
     for (int t = 0; t < triangleCount(); ++t) {
-        auto [it, inserted] = sheetOfRoot.emplace(find(t), static_cast<int>(sheetAreas_.size()));
+        auto [it, inserted] = sheetOfRoot.emplace(sheets.find(t), static_cast<int>(sheetAreas_.size()));
         if (inserted) sheetAreas_.push_back(0.0);
         sheetOfTriangle_[t] = it->second;
         sheetAreas_[it->second] += area(t);

@@ -3,6 +3,7 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/SelfIntersection.h>
+#include <btFracture/core/UnionFind.h>
 
 #include <Eigen/Geometry>
 
@@ -14,16 +15,6 @@
 
 namespace btfracture {
 namespace {
-
-struct UnionFind {
-    std::vector<int> parent;
-    explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-    int find(int i) {
-        while (parent[i] != i) i = parent[i] = parent[parent[i]];
-        return i;
-    }
-    void unite(int a, int b) { parent[find(a)] = find(b); }
-};
 
 void appendCount(std::ostringstream& out, int count, const char* singular, const char* plural) {
     if (count == 0) return;

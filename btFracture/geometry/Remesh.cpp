@@ -5,6 +5,7 @@
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/SelfIntersection.h>
 #include <btFracture/core/Timer.h>
+#include <btFracture/core/UnionFind.h>
 #include <btFracture/geometry/ClosestPointTree.h>
 #include <btFracture/geometry/EdgeLengthField.h>
 #include <btFracture/geometry/HalfEdgeMesh.h>
@@ -19,7 +20,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <map>
 #include <queue>
@@ -201,23 +201,19 @@ void requireValidArguments(const std::string& source, int targetTriangles, const
 // vertices only they used; returns how many triangles went.
 int dropSpecks(TriangleMesh& mesh) {
     const int n = static_cast<int>(mesh.triangles.size());
-    std::vector<int> parent(n);
-    for (int i = 0; i < n; ++i) parent[i] = i;
-    const std::function<int(int)> find = [&](int i) {
-        return parent[i] == i ? i : parent[i] = find(parent[i]);
-    };
+    UnionFind components(n);
     std::map<std::pair<int, int>, int> firstAtEdge;
     for (int t = 0; t < n; ++t)
         for (int k = 0; k < 3; ++k) {
             const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
             const auto [it, fresh] = firstAtEdge.emplace(std::minmax(a, b), t);
-            if (!fresh) parent[find(t)] = find(it->second);
+            if (!fresh) components.unite(t, it->second);
         }
-    std::map<int, int> size;
-    for (int t = 0; t < n; ++t) ++size[find(t)];
+    std::vector<int> size(n, 0);
+    for (int t = 0; t < n; ++t) ++size[components.find(t)];
     std::vector<std::array<int, 3>> kept;
     for (int t = 0; t < n; ++t)
-        if (size[find(t)] >= 4) kept.push_back(mesh.triangles[t]);
+        if (size[components.find(t)] >= 4) kept.push_back(mesh.triangles[t]);
     const int dropped = n - static_cast<int>(kept.size());
     if (dropped == 0) return 0;
     std::vector<int> newIndex(mesh.vertices.size(), -1);
