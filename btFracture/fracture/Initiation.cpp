@@ -12,6 +12,8 @@
 namespace btfracture {
 namespace {
 
+constexpr int kSeedHalvings = 2;  // smallest seed: a quarter of seedRadius x h
+
 double distanceToFront(const CrackMesh& cracks, const Eigen::Vector3d& x) {
     double best = INFINITY;
     for (const auto& e : cracks.frontEdges())
@@ -67,18 +69,28 @@ int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<See
             continue;
         }
         inward.normalize();
-        const double r = seedRadius * h;
-        const Eigen::Vector3d centre = x + (1.05 * r) * inward;
         // Rotate the hexagon so that one vertex points at the surface point.
         const Eigen::Vector3d u = c.crackNormal.unitOrthogonal(), v = c.crackNormal.cross(u);
         const double rotation = std::atan2((-inward).dot(v), (-inward).dot(u));
-        CrackMesh trial = cracks;
-        addDiscCrack(trial, centre, c.crackNormal, r, 1, rotation);
-        bool inside = true;
-        for (int i = cracks.nodeCount(); i < trial.nodeCount() && inside; ++i)
-            inside = windingNumber(mesh.nodes(), mesh.triangles(), trial.node(i)) > 0.5;
+        // Near an edge or in a thin wall the full seed pokes out of the body: halve it (twice at
+        // most) rather than lose the most loaded spot, which on a box's edge or a bowl's wall is
+        // where glass breaks.
+        CrackMesh trial;
+        bool inside = false;
+        double r = seedRadius * h;
+        for (int halving = 0; halving <= kSeedHalvings && !inside; ++halving, r *= 0.5) {
+            trial = cracks;
+            addDiscCrack(trial, x + (1.05 * r) * inward, c.crackNormal, r, 1, rotation);
+            inside = true;
+            for (int i = cracks.nodeCount(); i < trial.nodeCount() && inside; ++i)
+                inside = windingNumber(mesh.nodes(), mesh.triangles(), trial.node(i)) > 0.5;
+            if (inside && halving > 0)
+                logf(LogLevel::Debug, "initiation: triangle ", c.triangle, " seeded at 1/", 1 << halving,
+                     " of the seed radius (a full seed would leave the body)");
+        }
         if (!inside) {
-            logf(LogLevel::Debug, "initiation: triangle ", c.triangle, " skipped, seed would leave the body");
+            logf(LogLevel::Debug, "initiation: triangle ", c.triangle, " skipped, a seed of 1/",
+                 1 << kSeedHalvings, " of the radius would still leave the body");
             continue;
         }
         cracks = std::move(trial);

@@ -29,8 +29,9 @@ std::vector<SeedCandidate> findSeedCandidates(const SurfaceMesh& mesh,
                                               const std::vector<char>& blocked);
 
 // Adds up to `maxSeeds` hexagonal seeds for the candidates (circumradius seedRadius x the
-// triangle's diameter); a candidate whose crack plane is nearly parallel to the surface, or
-// whose seed would poke out of the body, is skipped with a log line. Seeds of one event keep
+// triangle's diameter); a seed that would poke out of the body (near an edge, in a thin wall)
+// is halved, at most twice. A candidate whose crack plane is nearly parallel to the surface, or
+// whose quarter-size seed still pokes out, is skipped with a log line. Seeds of one event keep
 // the distance rule among themselves too. Marks seeded triangles in `blocked`. Returns the
 // number of seeds.
 int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<SeedCandidate>& candidates,

@@ -73,6 +73,7 @@ const char* kHelp =
     "                 not depend on it\n"
     "  --outputs L    comma-separated subset of obj,vdb,csv,png, or none; replaces effects.outputs\n"
     "  --quiet        print only warnings and errors: no progress, no summary\n"
+    "  --verbose      also print the debug log (every crack step: front nodes, K/K_c, arrests)\n"
     "  --help         this text\n"
     "\n"
     "Progress goes to stderr: a bar on a terminal, a line every 10 % otherwise. The summary table\n"
@@ -99,6 +100,7 @@ struct Options {
     std::optional<int> threads;
     std::optional<SceneOutputFormats> outputs;
     bool quiet = false;
+    bool verbose = false;  // debug log
 };
 
 long long integerOption(const std::string& option, const std::string& text, long long minimum,
@@ -174,6 +176,8 @@ Options parseOptions(int argc, char** argv) {
             options.fractureRb = std::make_pair(bullet, value("--fracturerb"));
         } else if (arg == "--quiet" || arg == "-q") {
             options.quiet = true;
+        } else if (arg == "--verbose" || arg == "-v") {
+            options.verbose = true;
         } else if (!arg.empty() && arg[0] == '-') {
             throw Error("unknown option '" + arg + "'");
         } else if (options.scene.empty()) {
@@ -182,6 +186,7 @@ Options parseOptions(int argc, char** argv) {
             throw Error("more than one scene given ('" + options.scene + "', '" + arg + "')");
         }
     }
+    if (options.quiet && options.verbose) throw Error("--quiet and --verbose contradict each other");
     if (options.fractureRb && !options.scene.empty())
         throw Error("give either a SCENE or --fracturerb SCENE.bullet PARAMS.csv, not both");
     if (!options.fractureRb && options.scene.empty()) throw Error("no scene file given");
@@ -538,6 +543,7 @@ int main(int argc, char** argv) {
         return kBadInput;
     }
     if (options.quiet) setLogLevel(LogLevel::Warning);
+    if (options.verbose) setLogLevel(LogLevel::Debug);
     try {
         return run(options);
     } catch (const std::exception& e) {

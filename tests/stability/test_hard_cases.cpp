@@ -1,7 +1,7 @@
 // Hard cases stay numerically stable (issue 9): small scenes in a btFractureDynamicsWorld with the
 // physical BemFractureEngine at test resolution (BEM 1,000 triangles, default voxels), each
-// asserting at every step: no NaN or Inf in any body, nothing below the ground (by more than a
-// step's fall, and at the end by nothing beyond the slop) or out of a box 50 body sizes wide, total
+// asserting at every step: no NaN or Inf in any body, nothing tunnelling through the ground (and at
+// the end no centre of mass below it beyond the slop) or out of a box 50 body sizes wide, total
 // mechanical energy (kinetic + gravitational) never above its start value by more than 2 % of the start
 // kinetic energy (at rest: of the slab's weight x height); at every fracture event: fragment mass and volume
 // within 3 % of the parent's and the swap's momentum identity (support/ FractureEventAccounting.h) to 1e-4;
@@ -232,31 +232,15 @@ Outcome simulate(const Case& c) {
     // Start kinetic energy, or for bodies at rest the slab's weight over its own height.
     const double energyScale = std::max(kinetic0, (1.0 / w.slab->getInvMass()) * 9.81 * 2.0 * c.slabHalf.y());
     Outcome out;
-    // Below the ground: more than 5 % of the slab size plus Bullet's penetration slop (about a
-    // millimetre at its default margins); during the run also by as much as the body, or the
-    // body it broke from, ever fell in one step, or as deep as the lowest point of the body it
-    // broke from was at the event (discrete collision: a fast body can end a step that far in the
-    // ground - the flat-falling slab's first contact step tilts it 3.3 deg and leaves a corner
-    // 3.5 cm deep - its fragments spawn where it was, and Bullet pushes them out over the next
-    // steps), but never at the end of the run.
+    // Tunnelling: a centre of mass deeper in the ground than the slab is large (its largest half
+    // extent) is passing through it, not being pushed out of a penetration. Shallower than that a
+    // body may be in the ground during the run - discrete collision: a fast body ends a step in
+    // it, fragments spawn where their penetrating parent was (the flat-falling slab's first contact
+    // step tilts it 3.3 deg and leaves a corner 3.5 cm deep, so its corner chips start wholly under
+    // the plane), a steel ball presses a 60x lighter chip into the plane faster than the
+    // sequential-impulse solver pushes it out - but at the end no centre of mass may be below the
+    // ground by more than 5 % of the slab size plus Bullet's penetration slop (about a mm).
     const double groundSlop = 0.05 * w.size + 0.001;
-    std::map<const btCollisionObject*, double> fallPerStep;  // largest |v_y| dt or depth, own or inherited
-    struct InheritFall : FractureListener {
-        std::map<const btCollisionObject*, double>& fall;
-        explicit InheritFall(std::map<const btCollisionObject*, double>& f) : fall(f) {}
-        void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
-                             const FractureEventInfo&) override {
-            btVector3 lo, hi;
-            parent.getCollisionShape()->getAabb(parent.getWorldTransform(), lo, hi);
-            const double parentDepth = std::max(0.0, -double(lo.y()));
-            for (const btFractureRigidBody* f : fragments)
-                fall[f] = std::max({fall[f], fall[&parent], parentDepth});
-        }
-    } inheritFall(fallPerStep);
-    w.world->addFractureListener(&inheritFall);
-    auto belowGround = [&](const btRigidBody& b, double allowance) {
-        return double(b.getCenterOfMassPosition().y()) < -groundSlop - allowance;
-    };
     for (int s = 0; s < c.steps && out.finite; ++s) {
         w.world->stepSimulation(btScalar(c.step), 1, btScalar(c.step));
         for (int i = 0; i < w.world->getNumCollisionObjects(); ++i) {
@@ -270,18 +254,14 @@ Outcome simulate(const Case& c) {
                 out.problem = "non-finite body at step " + std::to_string(s);
                 break;
             }
-            const double fall = std::max(fallPerStep[b], std::abs(double(v.y())) * c.step);
-            if (belowGround(*b, fall) || std::abs(p.x()) > 50 * w.size || std::abs(p.z()) > 50 * w.size ||
+            if (p.y() < -w.size || std::abs(p.x()) > 50 * w.size || std::abs(p.z()) > 50 * w.size ||
                 p.y() > 50 * w.size) {
                 out.inside = false;
                 const auto* f = dynamic_cast<const btFractureRigidBody*>(b);
                 out.problem = (f ? f->name() : std::string("a projectile")) + " left the scene at step " +
                               std::to_string(s) + ", y = " + std::to_string(p.y()) +
-                              " m, v_y = " + std::to_string(v.y()) + " m/s, allowance " +
-                              std::to_string(groundSlop + fall) + " m";
+                              " m, v_y = " + std::to_string(v.y()) + " m/s";
             }
-            double& deepestFall = fallPerStep[b];
-            deepestFall = std::max(deepestFall, std::abs(double(v.y())) * c.step);
         }
         if (chaser.pending && chased < c.chaseBalls &&
             w.world->fractureStatistics().steps >=
@@ -303,13 +283,12 @@ Outcome simulate(const Case& c) {
     }
     for (int i = 0; i < w.world->getNumCollisionObjects(); ++i) {
         const btRigidBody* b = btRigidBody::upcast(w.world->getCollisionObjectArray()[i]);
-        if (b && b->getInvMass() != 0 && belowGround(*b, 0.0)) {
+        if (b && b->getInvMass() != 0 && double(b->getCenterOfMassPosition().y()) < -groundSlop) {
             out.inside = false;
             out.problem =
                 "body below the ground at the end, y = " + std::to_string(b->getCenterOfMassPosition().y());
         }
     }
-    w.world->removeFractureListener(&inheritFall);
     out.deepest = chaser.deepest;
     if (c.chaseBalls > 0) w.world->removeFractureListener(&chaser);
     out.events = accounting.events;
