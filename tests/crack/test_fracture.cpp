@@ -1,7 +1,8 @@
 // Fracture driver: propagation law, estimator (§4.2) against FULL on growing mode-I and mode-II
 // cracks with and without the right-hand-side update (§4.3) and its gain limit, the inverse
 // correlation of §4.3, the hybrid switch (§4.4) and FULL against HYBRID after it,
-// initiation, arrest at the surface, determinism.
+// initiation (seeds halved to fit a thin wall), arrest at the surface, a manifold front,
+// determinism.
 #include <btFracture/bem/ElasticSolver.h>
 #include <btFracture/core/Intersection.h>
 #include <btFracture/core/Primitives.h>
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 
 using namespace btfracture;
@@ -340,4 +342,62 @@ TEST(FractureSolver, FrontsArrestAtTheSurfaceAndRunsAreDeterministic) {
     EXPECT_GT(reachY, 0.05);  // grew across most of the 10 cm height
     ASSERT_EQ(first.size(), second.size());
     for (std::size_t i = 0; i < first.size(); ++i) EXPECT_EQ(first[i], second[i]);
+}
+
+// Issue 5: the coarse front stays a manifold curve - every front node has exactly one front
+// edge arriving and one leaving - while fronts grow, meet each other, slide along the faces and
+// stop there (two coplanar pre-cracks 4.5 cm apart in the growth slab).
+TEST(FractureSolver, FrontStaysAManifoldCurveWhileGrowingToTheSurface) {
+    const Slab s = slab(modeOneStress(), kGrowing);
+    for (const FractureMethod method : {FractureMethod::Full, FractureMethod::Estimated}) {
+        FractureSettings fs = growthSettings(method);
+        FractureSolver fracture(*s.solver, MaterialField(kGrowing), fs);
+        addGrowthPreCrack(fracture.cracks(), 0.02);
+        addGrowthPreCrack(fracture.cracks(), -0.025);
+        fracture.beginEvent(s.tractions);
+        int steps = 0;
+        for (; steps < 60; ++steps) {
+            const bool advanced = fracture.step(steps).advancedNodes > 0;
+            std::map<int, std::pair<int, int>> degree;  // node -> (arriving, leaving) front edges
+            for (const auto& e : fracture.cracks().frontEdges()) {
+                ++degree[e.a].second;
+                ++degree[e.b].first;
+            }
+            for (const auto& [node, d] : degree)
+                EXPECT_TRUE(d.first == 1 && d.second == 1)
+                    << toString(method) << " step " << steps << ": front node " << node << " has " << d.first
+                    << " arriving and " << d.second << " leaving front edges";
+            if (!advanced) break;
+        }
+        std::printf("%s: %d steps, %d crack triangles\n", toString(method), steps,
+                    fracture.cracks().triangleCount());
+        EXPECT_GT(fracture.cracks().triangleCount(), 2 * 24) << toString(method);  // it grew ...
+        EXPECT_LT(steps, 60) << toString(method);  // ... and stopped
+    }
+}
+
+// A seed that would poke out of a thin wall is halved (up to twice) instead of skipped: an 8 mm
+// plate under tension with 2 cm BEM triangles, where a full seed (circumradius half a triangle
+// diameter, 1.4 cm) does not fit anywhere.
+TEST(FractureSolver, SeedsInAThinWallAreHalvedToFit) {
+    const Material weak(3.1e9, 0.327, 1200.0, 5e5, 1e9, 2.0, "weak");  // tough: seeds do not grow
+    ElasticSolver solver(SurfaceMesh(makeBox(Eigen::Vector3d(0.1, 0.004, 0.06), 10, 1, 6)), weak);
+    Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
+    sigma(0, 0) = 1e6;
+    FractureSettings fs;
+    fs.maxNewCracksPerEvent = 3;
+    FractureSolver fracture(solver, MaterialField(weak), fs);
+    const FractureEventReport report = fracture.run(uniformStressTractions(solver.mesh(), sigma), 0.0);
+    EXPECT_EQ(report.seeds, 3);
+    const CrackMesh& cracks = fracture.cracks();
+    const SurfaceMesh& m = solver.mesh();
+    for (int i = 0; i < cracks.nodeCount(); ++i)
+        EXPECT_GT(windingNumber(m.nodes(), m.triangles(), cracks.node(i)), 0.5);
+    // A hexagon's circumradius is its edge length: a quarter of the full seed's at most.
+    double fullRadius = 0.0;
+    for (int t = 0; t < m.triangleCount(); ++t) fullRadius = std::max(fullRadius, fs.seedRadius * m.diameter(t));
+    for (int t = 0; t < cracks.triangleCount(); ++t) {
+        const auto& tri = cracks.triangle(t);
+        EXPECT_LE((cracks.node(tri[1]) - cracks.node(tri[2])).norm(), 0.26 * fullRadius);
+    }
 }
