@@ -372,7 +372,7 @@ TEST(FractureSolver, FrontStaysAManifoldCurveWhileGrowingToTheSurface) {
         std::printf("%s: %d steps, %d crack triangles\n", toString(method), steps,
                     fracture.cracks().triangleCount());
         EXPECT_GT(fracture.cracks().triangleCount(), 2 * 24) << toString(method);  // it grew ...
-        EXPECT_LT(steps, 60) << toString(method);  // ... and stopped
+        EXPECT_LT(steps, 60) << toString(method);                                  // ... and stopped
     }
 }
 
@@ -395,7 +395,8 @@ TEST(FractureSolver, SeedsInAThinWallAreHalvedToFit) {
         EXPECT_GT(windingNumber(m.nodes(), m.triangles(), cracks.node(i)), 0.5);
     // A hexagon's circumradius is its edge length: a quarter of the full seed's at most.
     double fullRadius = 0.0;
-    for (int t = 0; t < m.triangleCount(); ++t) fullRadius = std::max(fullRadius, fs.seedRadius * m.diameter(t));
+    for (int t = 0; t < m.triangleCount(); ++t)
+        fullRadius = std::max(fullRadius, fs.seedRadius * m.diameter(t));
     for (int t = 0; t < cracks.triangleCount(); ++t) {
         const auto& tri = cracks.triangle(t);
         EXPECT_LE((cracks.node(tri[1]) - cracks.node(tri[2])).norm(), 0.26 * fullRadius);
