@@ -174,15 +174,16 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
     // valid BEM mesh: it is skipped at once instead of letting the remesher spend seconds.
     RemeshOptions remesh;
     remesh.maxRefinements = 1;
-    TriangleMesh bem;
     std::string problems;
-    // Any source that fails (defects, or an error while it is built or remeshed) is noted and
-    // the next one tried.
-    for (std::size_t k = 0; k < sources.size() && bem.triangles.empty(); ++k) {
+    // Any source that fails (defects, an error while it is built or remeshed, or a BEM system
+    // that cannot be factored, as a remesh in disjoint parts: each part has six rigid modes, the
+    // regulariser removes six in all) is noted and the next one tried.
+    for (std::size_t k = 0; k < sources.size() && !s.solver; ++k) {
         const auto note = [&](const std::string& problem) {
             problems += std::string(problems.empty() ? "" : "; ") + sources[k].what + problem;
         };
-        TriangleMesh source, candidate;
+        TriangleMesh source, bem;
+        int parts = 0;
         try {
             source = sources[k].make();
             const MeshDefects sourceDefects = inspectMesh(source);
@@ -190,24 +191,25 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
                 note(" has " + sourceDefects.describe());
                 continue;
             }
-            candidate = remeshForBem(source, sources[k].target, remesh);
+            bem = remeshForBem(source, sources[k].target, remesh);
+            const MeshDefects defects = inspectMesh(bem);
+            parts = defects.components;
+            if (!defects.isClosedSolid()) {
+                note(": its BEM remesh has " + defects.describe());
+                continue;
+            }
+            bem.name = body.name() + " (BEM)";
+            s.solver = std::make_unique<ElasticSolver>(SurfaceMesh(std::move(bem)), body.material());
         } catch (const Error& e) {
-            note(": " + std::string(e.what()));
-            continue;
-        }
-        const MeshDefects defects = inspectMesh(candidate);
-        if (!defects.isClosedSolid()) {
-            note(": its BEM remesh has " + defects.describe());
+            note(": " + std::string(e.what()) +
+                 (parts > 1 ? " (its BEM remesh has " + std::to_string(parts) + " separate parts)" : ""));
             continue;
         }
         if (k > 0)
             logf(LogLevel::Info, body.name(), ": BEM mesh from ", sources[k].what, " (", problems, ")");
         s.bemSource = std::move(source);
-        bem = std::move(candidate);
     }
-    if (bem.triangles.empty()) throw Error(body.name() + ": no BEM mesh can be built: " + problems);
-    bem.name = body.name() + " (BEM)";
-    s.solver = std::make_unique<ElasticSolver>(SurfaceMesh(std::move(bem)), body.material());
+    if (!s.solver) throw Error(body.name() + ": no BEM mesh can be built: " + problems);
     ++stats.bemBuilds;
     const SurfaceMesh& mesh = s.solver->mesh();
     TriangleMesh centred{mesh.nodes(), mesh.triangles(), body.name() + " (BEM)"};
@@ -317,12 +319,6 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
         m.triangles.push_back({ia, ib2, ia2});
     }
     return out;
-}
-
-// A collision mesh usable for a rigid body: closed with a volume of at least a tenth of the
-// level-set volume it stands for.
-bool hasVolume(const TriangleMesh& mesh, double volume) {
-    return mesh.triangles.size() >= 4 && enclosedVolume(mesh) > 0.1 * volume;
 }
 
 FragmentSpec::Class specClass(FragmentClass c) {
@@ -463,11 +459,11 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
         spec.cls = specClass(f.volumeClass);
         // Geometry is in the state frame; the spec is in the parent's body frame.
         spec.collisionMesh = spec.cls == FragmentSpec::Class::ConvexHull ? f.convexHull : f.collisionMesh;
-        if (!hasVolume(spec.collisionMesh, f.mass.volume)) {
+        if (!holdsVolume(spec.collisionMesh, f.mass.volume)) {
             // A sliver whose mesh lost its volume in decimation: its hull, or nothing (logged).
-            if (!hasVolume(f.convexHull, f.mass.volume)) {
-                logf(LogLevel::Info, body.name(), ": fragment ", f.name, " of ", f.mass.volume,
-                     " m^3 has no meshable volume and is dropped");
+            if (!holdsVolume(f.convexHull, f.mass.volume)) {
+                logf(LogLevel::Warning, body.name(), ": fragment ", f.name, " of ", f.mass.volume,
+                     " m^3 has no mesh that holds its volume and is dropped");
                 continue;
             }
             spec.collisionMesh = f.convexHull;

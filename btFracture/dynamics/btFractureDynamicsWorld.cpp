@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 namespace btfracture {
 namespace {
@@ -113,6 +114,8 @@ void validateSpec(const FragmentSpec& spec, double originalVolume, const std::st
 // new fragments' pairs in the replayed step) use Bullet's perturbed multi-point contact
 // generation, so a fragment resting on something starts with a full contact manifold instead of
 // one point per step (which lets it sink and tip: popping). Other pairs keep their algorithms.
+// A pair takes the create function of its shapes in its proxies' order, and a plane added to
+// the world before the fragments (the usual ground) comes first: both orders are switched.
 class MultipointContactsForNewPairs {
 public:
     explicit MultipointContactsForNewPairs(btCollisionConfiguration* configuration) {
@@ -120,39 +123,43 @@ public:
         convex_ =
             dynamic_cast<btConvexConvexAlgorithm::CreateFunc*>(configuration->getCollisionAlgorithmCreateFunc(
                 CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
-        plane_ = dynamic_cast<btConvexPlaneCollisionAlgorithm::CreateFunc*>(
+        planes_[0] = dynamic_cast<btConvexPlaneCollisionAlgorithm::CreateFunc*>(
             configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE,
                                                            STATIC_PLANE_PROXYTYPE));
+        planes_[1] = dynamic_cast<btConvexPlaneCollisionAlgorithm::CreateFunc*>(
+            configuration->getCollisionAlgorithmCreateFunc(STATIC_PLANE_PROXYTYPE,
+                                                           CONVEX_HULL_SHAPE_PROXYTYPE));
         if (convex_) {
-            saved_[0] = convex_->m_numPerturbationIterations;
-            saved_[1] = convex_->m_minimumPointsPerturbationThreshold;
-            convex_->m_numPerturbationIterations = 3;
-            convex_->m_minimumPointsPerturbationThreshold = 3;
+            saved_[0] = {convex_->m_numPerturbationIterations, convex_->m_minimumPointsPerturbationThreshold};
+            convex_->m_numPerturbationIterations = kIterations;
+            convex_->m_minimumPointsPerturbationThreshold = kMinimumPoints;
         }
-        if (plane_) {
-            saved_[2] = plane_->m_numPerturbationIterations;
-            saved_[3] = plane_->m_minimumPointsPerturbationThreshold;
-            plane_->m_numPerturbationIterations = 3;
-            plane_->m_minimumPointsPerturbationThreshold = 3;
-        }
+        for (int k = 0; k < 2; ++k)
+            if (planes_[k]) {
+                saved_[k + 1] = {planes_[k]->m_numPerturbationIterations,
+                                 planes_[k]->m_minimumPointsPerturbationThreshold};
+                planes_[k]->m_numPerturbationIterations = kIterations;
+                planes_[k]->m_minimumPointsPerturbationThreshold = kMinimumPoints;
+            }
     }
     ~MultipointContactsForNewPairs() {
-        if (convex_) {
-            convex_->m_numPerturbationIterations = saved_[0];
-            convex_->m_minimumPointsPerturbationThreshold = saved_[1];
-        }
-        if (plane_) {
-            plane_->m_numPerturbationIterations = saved_[2];
-            plane_->m_minimumPointsPerturbationThreshold = saved_[3];
-        }
+        if (convex_)
+            std::tie(convex_->m_numPerturbationIterations, convex_->m_minimumPointsPerturbationThreshold) =
+                saved_[0];
+        for (int k = 0; k < 2; ++k)
+            if (planes_[k])
+                std::tie(planes_[k]->m_numPerturbationIterations,
+                         planes_[k]->m_minimumPointsPerturbationThreshold) = saved_[k + 1];
     }
     MultipointContactsForNewPairs(const MultipointContactsForNewPairs&) = delete;
     MultipointContactsForNewPairs& operator=(const MultipointContactsForNewPairs&) = delete;
 
 private:
+    static constexpr int kIterations = 3, kMinimumPoints = 3;  // btDefaultCollisionConfiguration's suggestion
     btConvexConvexAlgorithm::CreateFunc* convex_ = nullptr;
-    btConvexPlaneCollisionAlgorithm::CreateFunc* plane_ = nullptr;
-    int saved_[4] = {0, 0, 0, 0};
+    btConvexPlaneCollisionAlgorithm::CreateFunc* planes_[2] = {nullptr,
+                                                               nullptr};  // convex-plane, plane-convex
+    std::pair<int, int> saved_[3];  // iterations, minimum points: convex, then the two plane orders
 };
 
 Eigen::Matrix3d worldInertia(const btRigidBody& body) {

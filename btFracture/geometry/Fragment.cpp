@@ -1,6 +1,7 @@
 #include <btFracture/geometry/Fragment.h>
 
 #include <btFracture/core/Error.h>
+#include <btFracture/core/MassProperties.h>
 
 #include <cmath>
 #include <sstream>
@@ -62,6 +63,10 @@ FragmentClass classifyFragment(double volume, double parentVolume, double origin
     if (ofOriginal <= settings.unbreakableMaxFraction) return FragmentClass::Unbreakable;
     if (volume > settings.keepParentSolverFraction * parentVolume) return FragmentClass::KeepsParentSolver;
     return FragmentClass::Breakable;
+}
+
+bool holdsVolume(const TriangleMesh& mesh, double volume) {
+    return mesh.triangles.size() >= 4 && enclosedVolume(mesh) >= 0.1 * volume;
 }
 
 }  // namespace btfracture

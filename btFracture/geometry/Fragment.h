@@ -43,6 +43,10 @@ struct FragmentSettings {
 FragmentClass classifyFragment(double volume, double parentVolume, double originalVolume,
                                const FragmentSettings& settings);
 
+// Whether `mesh` can stand for a body of `volume` [m^3] in collisions: at least 4 triangles,
+// enclosing at least a tenth of the volume (decimation can flatten a sliver's mesh).
+bool holdsVolume(const TriangleMesh& mesh, double volume);
+
 struct Fragment {
     std::string name;     // "<parent name>/<index>" for messages
     MassProperties mass;  // measured on the fragment's level set, density 1, parent frame
@@ -57,7 +61,8 @@ struct Fragment {
     // cracks are closed up.
     TriangleMesh collisionMesh;
     // Closed outward convex hull of the fragment's surface (for class ConvexHull and for
-    // separating overlaps, ConvexPenetration.h).
+    // separating overlaps, ConvexPenetration.h); for a piece whose surface does not hold its
+    // volume (a flake about a voxel thick meshes to next to nothing), the hull of its voxels.
     TriangleMesh convexHull;
 
     // Breakable and KeepsParentSolver only (§5.3). surfaceMesh: the closed fine surface

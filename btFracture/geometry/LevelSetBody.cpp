@@ -207,8 +207,8 @@ double voxelInsideFraction(const FloatGrid::ConstAccessor& acc, const Coord& ijk
                            Eigen::Vector3d& normal) {
     normal.setZero();
     const double phi = acc.getValue(ijk) / voxelSize;
-    if (phi >= 0.8661) return 0.0;  // sqrt(3)/2: the plane misses the voxel
-    if (phi <= -0.8661) return 1.0;
+    if (phi >= kVoxelHalfDiagonal) return 0.0;  // the plane misses the voxel
+    if (phi <= -kVoxelHalfDiagonal) return 1.0;
     const Eigen::Vector3d g(acc.getValue(ijk.offsetBy(1, 0, 0)) - acc.getValue(ijk.offsetBy(-1, 0, 0)),
                             acc.getValue(ijk.offsetBy(0, 1, 0)) - acc.getValue(ijk.offsetBy(0, -1, 0)),
                             acc.getValue(ijk.offsetBy(0, 0, 1)) - acc.getValue(ijk.offsetBy(0, 0, -1)));
@@ -334,8 +334,8 @@ MassProperties integrateMass(const FloatGrid& phi) {
             for (auto it = leaves[n]->cbeginValueAll(); it; ++it) {
                 const float value = *it;
                 double f;
-                if (value >= 0.8661f * static_cast<float>(dx)) continue;
-                if (value <= -0.8661f * static_cast<float>(dx)) {
+                if (value >= static_cast<float>(kVoxelHalfDiagonal * dx)) continue;
+                if (value <= static_cast<float>(-kVoxelHalfDiagonal * dx)) {
                     f = 1.0;
                     normal.setZero();
                 } else {

@@ -52,6 +52,26 @@ struct CrackVoxel {
     int plus, minus;        // fragment labels kSideProbes along +n / -n, -1 if none
 };
 
+// Convex hull of every voxel that integrateMass counts for phi (phi below half a voxel
+// diagonal; interior tiles as boxes), each as its corners: the shape of a piece whose zero
+// isosurface does not hold the volume the level set measures (a flake about a voxel thick meshes
+// to next to nothing). Mass and inertia still come from the level set; its centre of mass, a
+// weighted mean of points in these voxels, lies inside this hull.
+TriangleMesh voxelHull(const FloatGrid& phi, const std::string& name) {
+    std::vector<Eigen::Vector3d> corners;
+    const float counted = static_cast<float>(kVoxelHalfDiagonal * phi.voxelSize()[0]);
+    for (auto it = phi.tree().cbeginValueAll(); it; ++it) {
+        if (!(*it < counted)) continue;
+        const openvdb::CoordBBox box = it.getBoundingBox();  // one voxel, or a tile
+        const openvdb::Vec3d lo = phi.indexToWorld(box.min().asVec3d() - openvdb::Vec3d(0.5)),
+                             hi = phi.indexToWorld(box.max().asVec3d() + openvdb::Vec3d(0.5));
+        for (int k = 0; k < 8; ++k)
+            corners.emplace_back(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+    }
+    if (corners.empty()) throw Error(name + ": no voxel of the fragment is inside its level set");
+    return convexHullMesh(corners, name);
+}
+
 struct Component {
     BoolGrid::Ptr mask;
     openvdb::Index64 voxels = 0;
@@ -244,23 +264,21 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
         f.incompleteCracks.assign(incomplete.begin(), incomplete.end());
 
         TriangleMesh surface = meshFromGrid(*phi, f.name);
-        if (surface.triangles.size() < 4) {
-            logf(LogLevel::Warning, f.name, ": fragment of ", f.mass.volume, " m^3 (",
-                 surface.vertices.size(), " surface vertices) is too thin to mesh; dropped");
-            dustVolume += f.mass.volume;
-            ++dustCount;
-            continue;
+        if (surface.triangles.size() < 4) {  // a flake about a voxel thick: its voxels' hull
+            logf(LogLevel::Info, f.name, ": fragment of ", f.mass.volume, " m^3 (", surface.vertices.size(),
+                 " surface vertices) is too thin to mesh; its surface is the hull of its voxels");
+            surface = voxelHull(*phi, f.name);
         }
         f.collisionMesh =
             collisionMeshFromGrid(*phi, settings.collisionTriangles, f.name + " (collision)", &surface);
         try {
             f.convexHull = convexHullMesh(surface.vertices, f.name + " (convex hull)");
-        } catch (const Error& e) {  // a flat sliver: no volume to collide with
-            logf(LogLevel::Warning, f.name, ": fragment of ", f.mass.volume, " m^3 has no convex hull (",
-                 e.what(), "); dropped");
-            dustVolume += f.mass.volume;
-            ++dustCount;
-            continue;
+        } catch (const Error&) {  // a flat sliver
+        }
+        if (!holdsVolume(f.convexHull, f.mass.volume)) {
+            logf(LogLevel::Debug, f.name, ": fragment of ", f.mass.volume,
+                 " m^3: its surface's hull does not hold its volume; the hull of its voxels instead");
+            f.convexHull = voxelHull(*phi, f.name + " (convex hull)");
         }
 
         // The fragment as a body of its own, with its incomplete cracks still cut into it.

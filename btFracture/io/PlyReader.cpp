@@ -5,7 +5,6 @@
 #include <btFracture/io/ReadFile.h>
 #include <btFracture/io/TextTokens.h>
 
-#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <sstream>
@@ -186,11 +185,12 @@ public:
         }
         const int size = sizeOf(type);
         if (position_ + size > bytes_.size()) fail("file ends early in property '" + property + "'");
+        // Bytes in this machine's (little endian) order.
         unsigned char raw[8];
-        std::memcpy(raw, bytes_.data() + position_, size);
+        const bool swap = format_ == Format::BinaryBigEndian;
+        for (int i = 0; i < size; ++i)
+            raw[i] = static_cast<unsigned char>(bytes_[position_ + (swap ? size - 1 - i : i)]);
         position_ += size;
-        if (format_ == Format::BinaryBigEndian)
-            std::reverse(raw, raw + size);  // this machine is little endian
         switch (type) {
             case Type::Int8:
                 return static_cast<int8_t>(raw[0]);

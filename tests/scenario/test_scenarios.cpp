@@ -129,12 +129,15 @@ TEST_P(Scenario, BreaksWhereExpectedConservingVolumeAndMomentum) {
 }
 
 // Steps cover the impact with a margin; windows bracket the first contact of the projectile or
-// the ground (free fall t = sqrt(2 h / g)).
+// the ground (free fall t = sqrt(2 h / g)). falling_boxes names no box: each glass block lands
+// near its toughness (box2's fronts arrest at K/K_c 0.98 in one build and ran on in another, the
+// difference a 1-ulp eigenvalue), so which one breaks first follows the rounding; one of them
+// must, within the window of the first two landings (3 m and 4 m: 0.78 and 0.90 s).
 INSTANTIATE_TEST_SUITE_P(PaperScenes, Scenario,
                          ::testing::Values(Expect{"column_bunny", 100, {"column"}, 0.15, 0.30},
                                            Expect{"bunny_smash", 30, {"bunny"}, 0.0, 0.08},
                                            Expect{"brick", 60, {"brick"}, 0.0, 0.05},
-                                           Expect{"falling_boxes", 500, {"box2"}, 0.75, 1.0},
+                                           Expect{"falling_boxes", 500, {}, 0.75, 1.0},
                                            Expect{"bowl_drop", 420, {"bowl"}, 0.70, 0.85},
                                            Expect{"armadillos", 40, {"left", "right"}, 0.02, 0.08},
                                            Expect{"window_pane", 15, {"pane"}, 0.005, 0.02}),

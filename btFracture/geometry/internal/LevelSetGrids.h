@@ -35,6 +35,9 @@ auto serially(F&& f) {
 
 constexpr float kHalfWidthVoxels = 3.0f;            // narrow band, each side of the surface
 constexpr double kCrackHalfThicknessVoxels = 0.85;  // slab = |distance to sheet| < this
+// sqrt(3)/2 rounded up [voxels]: a plane farther than this from a voxel's centre misses the voxel,
+// so integrateMass counts no part of a voxel with phi >= this and all of one with phi <= -this.
+constexpr double kVoxelHalfDiagonal = 0.8661;
 
 struct CrackTriangle {
     Eigen::Vector3d a, b, c;
