@@ -5,6 +5,7 @@
 #include <btFracture/io/ReadFile.h>
 #include <btFracture/io/TextTokens.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <sstream>
@@ -183,31 +184,24 @@ public:
                      " for property '" + property + "', got '" + std::string(token) + "'");
             return isInteger(type) ? static_cast<double>(integer) : value;
         }
-        const int size = sizeOf(type);
-        if (position_ + size > bytes_.size()) fail("file ends early in property '" + property + "'");
-        // Bytes in this machine's (little endian) order.
-        unsigned char raw[8];
-        const bool swap = format_ == Format::BinaryBigEndian;
-        for (int i = 0; i < size; ++i)
-            raw[i] = static_cast<unsigned char>(bytes_[position_ + (swap ? size - 1 - i : i)]);
-        position_ += size;
+        if (position_ + sizeOf(type) > bytes_.size()) fail("file ends early in property '" + property + "'");
         switch (type) {
             case Type::Int8:
-                return static_cast<int8_t>(raw[0]);
+                return take<int8_t>();
             case Type::UInt8:
-                return raw[0];
+                return take<uint8_t>();
             case Type::Int16:
-                return load<int16_t>(raw);
+                return take<int16_t>();
             case Type::UInt16:
-                return load<uint16_t>(raw);
+                return take<uint16_t>();
             case Type::Int32:
-                return load<int32_t>(raw);
+                return take<int32_t>();
             case Type::UInt32:
-                return load<uint32_t>(raw);
+                return take<uint32_t>();
             case Type::Float32:
-                return load<float>(raw);
+                return take<float>();
             case Type::Float64:
-                return load<double>(raw);
+                return take<double>();
         }
         return 0.0;
     }
@@ -221,8 +215,14 @@ public:
     }
 
 private:
+    // The next binary value as T (its size fixed at compile time), bytes in the file's order.
     template <class T>
-    static double load(const unsigned char* raw) {
+    double take() {
+        unsigned char raw[sizeof(T)];
+        std::memcpy(raw, bytes_.data() + position_, sizeof(T));
+        position_ += sizeof(T);
+        if (format_ == Format::BinaryBigEndian)
+            std::reverse(raw, raw + sizeof(T));  // this machine: little endian
         T value;
         std::memcpy(&value, raw, sizeof(T));
         return static_cast<double>(value);
