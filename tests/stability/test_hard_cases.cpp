@@ -9,6 +9,7 @@
 // twice (the refracture chains included).
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Material.h>
+#include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/BemFractureEngine.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
@@ -123,7 +124,8 @@ struct Outcome {
     std::vector<btTransform> fragmentPoses;
     FractureStatistics stats;
     int bodies = 0;
-    int deepest = -1;  // deepest parent generation of a chased event (chase mode)
+    int deepest = -1;      // deepest parent generation of a chased event (chase mode)
+    double seconds = 0.0;  // wall time of the run [s]
 };
 
 class World {
@@ -221,6 +223,7 @@ public:
 };
 
 Outcome simulate(const Case& c) {
+    const Timer timer;
     World w(c);
     FractureEventAccounting accounting(c.step);
     w.world->addFractureListener(&accounting);
@@ -302,6 +305,7 @@ Outcome simulate(const Case& c) {
     if (c.chaseBalls > 0) w.world->removeFractureListener(&chaser);
     out.events = accounting.events;
     out.stats = w.world->fractureStatistics();
+    out.seconds = timer.seconds();
     out.bodies = w.world->getNumCollisionObjects();
     for (int i = 0; i < w.world->getNumCollisionObjects(); ++i) {
         btCollisionObject* o = w.world->getCollisionObjectArray()[i];
@@ -322,10 +326,13 @@ Outcome expectStable(const Case& c, const char* name) {
         EXPECT_NEAR(e.volumeRatio, 1.0, 0.03) << name << " at t = " << e.time;
         EXPECT_LT(e.momentumError, 1e-4) << name << " at t = " << e.time;
     }
+    double engineSeconds = 0.0;
+    for (const auto& e : a.events) engineSeconds += e.engineSeconds;
     std::printf(
-        "%s: %zu events, %d bodies at the end, energy growth %.2e, engine calls %llu, failures %llu\n", name,
-        a.events.size(), a.bodies, a.energyGrowth, static_cast<unsigned long long>(a.stats.engineCalls),
-        static_cast<unsigned long long>(a.stats.engineFailures));
+        "%s: %zu events, %d bodies at the end, energy growth %.2e, engine calls %llu, failures %llu; %.1f s "
+        "(events' engine time %.1f s)\n",
+        name, a.events.size(), a.bodies, a.energyGrowth, static_cast<unsigned long long>(a.stats.engineCalls),
+        static_cast<unsigned long long>(a.stats.engineFailures), a.seconds, engineSeconds);
     if (!a.events.empty()) {
         const Outcome b = simulate(c);
         EXPECT_EQ(a.events.size(), b.events.size()) << name;
@@ -481,8 +488,11 @@ TEST(Stability, RefractureChain) {
     std::printf("refracture chain: deepest parent generation %d, engine failures %llu\n", o.deepest,
                 static_cast<unsigned long long>(o.stats.engineFailures));
     for (const auto& e : o.events)
-        std::printf("  event at %.3f s: generation %d, %d fragments\n", e.time, e.refractureDepth,
-                    e.fragments);
+        std::printf(
+            "  event at %.3f s: %s, generation %d, %d fragments, engine %.1f s (BEM %.1f, fracture %.1f, "
+            "geometry %.1f)\n",
+            e.time, e.body.c_str(), e.refractureDepth, e.fragments, e.engineSeconds, e.engineTimings.bem,
+            e.engineTimings.fracture, e.engineTimings.geometry);
     EXPECT_GE(o.deepest, 4);
     EXPECT_EQ(o.stats.engineFailures, 0u);
 }

@@ -32,6 +32,8 @@ struct FractureEventCheck {
     double volumeRatio = 0.0;     // sum of fragment volumes / parent volume
     double momentumError = 0.0;   // relative, see above
     std::vector<double> volumes;  // fragment volumes [m^3], in spawn order
+    double engineSeconds = 0.0;   // the fracture engine's time for this event [s]
+    EngineTimings engineTimings;  // ... split into BEM, fracture and geometry
 };
 
 class FractureEventAccounting : public FractureListener {
@@ -49,6 +51,8 @@ public:
         e.time = static_cast<double>(info.step) * step_;
         e.fragments = static_cast<int>(fragments.size());
         e.refractureDepth = parent.settings().refractureDepth;
+        e.engineSeconds = info.engineSeconds;
+        e.engineTimings = info.engineTimings;
         const double M = 1.0 / parent.getInvMass();
         const Eigen::Vector3d c = eig(parent.getCenterOfMassPosition()), v = eig(parent.getLinearVelocity()),
                               w = eig(parent.getAngularVelocity());
