@@ -228,9 +228,10 @@ FrontAdvanceResult CrackFronts::advance(const std::map<int, CoarseFront>& fronts
     for (const auto& [sheet, front] : fronts) {
         const auto found = sheets_.find(sheet);
         if (found == sheets_.end()) continue;
-        auto advanceOf = [&](int node) {
-            const auto it = front.advance.find(node);
-            return it == front.advance.end() ? Eigen::Vector3d::Zero().eval() : it->second;
+        const std::map<int, Eigen::Vector3d>& advances = front.advance;  // (clang 14 captures no bindings)
+        auto advanceOf = [&advances](int node) {
+            const auto it = advances.find(node);
+            return it == advances.end() ? Eigen::Vector3d::Zero().eval() : it->second;
         };
         std::vector<Steps>& sheetSteps = steps[sheet];
         for (MarkerChain& chain : found->second) {
