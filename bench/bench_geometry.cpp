@@ -8,6 +8,7 @@
 #include <btFracture/core/Timer.h>
 #include <btFracture/fracture/CrackFront.h>
 #include <btFracture/geometry/LevelSetBody.h>
+#include <btFracture/geometry/LevelSetFrontQueries.h>
 #include <btFracture/io/MeshReader.h>
 
 #include <Eigen/Geometry>
@@ -80,8 +81,7 @@ int main() {
 
     // Marker front: hexagonal coarse front growing 4 voxels per step in the crack plane.
     LevelSetBody marked(bunny, voxel);
-    const FrontQueries queries{[&](const Eigen::Vector3d& p) { return marked.isInsideSolid(p); },
-                               [&](const Eigen::Vector3d& p) { return marked.crackAt(p); }};
+    const FrontQueries queries = levelSetFrontQueries(marked);
     CoarseFront coarse;
     for (int k = 0; k < 6; ++k) {
         const double a = 2.0 * 3.14159265358979 * k / 6;

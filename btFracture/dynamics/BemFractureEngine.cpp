@@ -12,6 +12,7 @@
 #include <btFracture/fracture/FractureSolver.h>
 #include <btFracture/fracture/StressIntensity.h>
 #include <btFracture/geometry/LevelSetBody.h>
+#include <btFracture/geometry/LevelSetFrontQueries.h>
 #include <btFracture/geometry/Remesh.h>
 
 #include <Eigen/Geometry>
@@ -51,13 +52,9 @@ void addTally(FrontAdvanceResult& into, const FrontAdvanceResult& r) {
     into.substeps += r.substeps;
     into.arrestedMarkers += r.arrestedMarkers;
     into.leftBody += r.leftBody;
+    into.slid += r.slid;
     into.metCrack += r.metCrack;
     into.metSheet += r.metSheet;
-}
-
-FrontQueries frontQueries(const LevelSetBody& levelSet) {
-    return {[&levelSet](const Eigen::Vector3d& p) { return levelSet.isInsideSolid(p); },
-            [&levelSet](const Eigen::Vector3d& p) { return levelSet.crackAt(p); }};
 }
 
 // The coarse front of every sheet in the state frame, with each node's advance of this step.
@@ -84,7 +81,7 @@ std::vector<int> advanceMarkers(BemFractureState& s, const CrackMesh& cracks,
                                 const std::map<int, FrontAdvance>& advances) {
     if (!s.fronts) s.fronts = std::make_unique<CrackFronts>(s.levelSet->voxelSize());
     const Eigen::Vector3d offset = s.solver->mesh().offset();
-    const FrontQueries queries = frontQueries(*s.levelSet);
+    const FrontQueries queries = levelSetFrontQueries(*s.levelSet);
     const std::map<int, CoarseFront> fronts = coarseFronts(cracks, advances, offset);
     for (const auto& [sheet, front] : fronts) {
         if (s.fronts->hasSheet(sheet)) continue;
@@ -271,7 +268,7 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
         for (const auto& e : cracks.frontEdges())
             for (const int node : {e.a, e.b})
                 if (s.fracture->isArrested(node)) stopped[cracks.sheetOf(e.triangle)].insert(node);
-        addTally(s.frontTally, s.fronts->extend(stopped, extension, frontQueries(*s.levelSet)));
+        addTally(s.frontTally, s.fronts->extend(stopped, extension, levelSetFrontQueries(*s.levelSet)));
         int markers = 0, active = 0;
         for (const int sheet : s.fronts->sheets())
             for (const MarkerChain& chain : s.fronts->chains(sheet))
@@ -283,8 +280,8 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
         logf(LogLevel::Info, s.levelSet->name(), ": crack fronts of ", s.fronts->sheets().size(), " sheets, ",
              markers, " markers (", active, " active), ", t.substeps, " sub-steps; arrested ",
              t.arrestedMarkers, " (", t.leftBody, " at the surface, ", t.metCrack, " in cut cracks, ",
-             t.metSheet, " at other sheets, the rest at the end of their extension), ",
-             s.fronts->sweptTriangles(), " swept triangles to cut");
+             t.metSheet, " at other sheets, the rest at the end of their extension), ", t.slid,
+             " slides along the surface, ", s.fronts->sweptTriangles(), " swept triangles to cut");
         s.frontTally = FrontAdvanceResult();
         out = s.fronts->takeSwept();
     }
@@ -500,7 +497,7 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
         s.bodyToState = keptBodyToState;
         s.levelSet = keptLevelSet;
         if (s.fronts) {
-            const int freed = s.fronts->freeOutside(frontQueries(*s.levelSet));
+            const int freed = s.fronts->freeOutside(levelSetFrontQueries(*s.levelSet));
             if (freed > 0)
                 logf(LogLevel::Info, body.name(), ": ", freed,
                      " crack front markers outside the kept fragment follow their coarse front freely");

@@ -6,14 +6,12 @@
 // level set with their incomplete cracks and those cracks' sheets (§5.3); the > 95 % fragment
 // keeps the parent's whole state, BEM included.
 //
-// Cutting: by default the coarse BEM crack sheet is cut into the level set (extended to the
-// surface where its front stopped). With voxelFronts (issue 5, §3), voxel-resolution markers
-// (CrackFront.h) follow the coarse front in every crack step, stop at the level set's surface
-// and in cracks cut earlier, stop the coarse nodes whose markers all stopped (after that
-// step's move), are carried on to the surface or another crack where the coarse front
-// stopped, and the surface they swept is cut instead. Still opt-in: the coupling glass slab
-// splits like the coarse cut (4 fragments each), but in falling_boxes and the curved-fragment
-// refracture case the marker cut breaks less than the coarse cut (README).
+// Cutting (issue 5, §3): voxel-resolution markers (CrackFront.h) follow the coarse front in every
+// crack step, slide along the level set's surface where the coarse front does (SurfaceSlide.h),
+// stop at it otherwise and in cracks cut earlier, stop the coarse nodes whose markers all
+// stopped (after that step's move), are carried on to the surface or another crack where the
+// coarse front stopped, and the surface they swept is cut into the level set. With voxelFronts
+// off the coarse BEM crack sheet is cut instead (extended to the surface where its front stopped).
 #include <btFracture/core/FractureSettings.h>
 #include <btFracture/dynamics/FractureEngine.h>
 #include <btFracture/geometry/Fragment.h>
@@ -31,8 +29,8 @@ struct BemFractureEngineSettings {
     // Volume classes; collisionTriangles comes from each body's collisionTriangleTarget.
     FragmentSettings fragments;
     // Cut the surface swept by voxel-resolution crack fronts (issue 5) instead of the coarse
-    // crack sheet; opt-in, see the header comment.
-    bool voxelFronts = false;
+    // crack sheet (see the header comment).
+    bool voxelFronts = true;
 };
 
 class BemFractureEngine : public FractureEngine {

@@ -2,6 +2,7 @@
 
 #include <btFracture/core/ClosestPoint.h>
 #include <btFracture/core/Error.h>
+#include <btFracture/fracture/SurfaceSlide.h>
 
 #include <Eigen/Geometry>
 
@@ -41,6 +42,16 @@ std::int64_t cellKey(long x, long y, long z) {
     // 21 bits per axis (cells of 2 voxels: +-2^20 cells is far beyond kMaxVoxelsAcross).
     const auto u = [](long v) { return static_cast<std::int64_t>(v & 0x1FFFFF); };
     return (u(x) << 42) | (u(y) << 21) | u(z);
+}
+
+// Front tangent at marker i of a chain whose marker positions were `positions` (0 for a lone marker).
+Eigen::Vector3d chainTangent(const MarkerChain& chain, const std::vector<Eigen::Vector3d>& positions,
+                             std::size_t i) {
+    const std::size_t n = positions.size();
+    if (n < 2) return Eigen::Vector3d::Zero();
+    const std::size_t prev = chain.closed ? (i + n - 1) % n : (i > 0 ? i - 1 : i);
+    const std::size_t next = chain.closed ? (i + 1) % n : (i + 1 < n ? i + 1 : i);
+    return positions[next] - positions[prev];
 }
 
 FrontMarker between(const FrontMarker& a, const FrontMarker& b, double t) {
@@ -386,15 +397,26 @@ FrontAdvanceResult CrackFronts::sweep(std::map<int, std::vector<Steps>>& steps, 
                             ++result.leftBody;
                         }
                     } else if (!inside) {
-                        // Bisect for the surface, stop just past it.
+                        // Bisect for the surface; slide on along it from just inside (the rest
+                        // of this advance along the line SurfaceSlide gives), else stop just past it.
                         double lo = 0.0, hi = 1.0;
                         for (int b = 0; b < 10; ++b) {
                             const double mid = 0.5 * (lo + hi);
                             (queries.insideBody(p + mid * (q - p)) ? lo : hi) = mid;
                         }
-                        q = p + hi * (q - p) + kPastSurface * spacing_ * dir;
-                        m.arrested = true;
-                        ++result.leftBody;
+                        const SurfaceSlide slide = queries.surfaceNormal
+                                                       ? surfaceSlide(dir, chainTangent(chain, old, i),
+                                                                      queries.surfaceNormal(p + hi * (q - p)))
+                                                       : SurfaceSlide{};
+                        if (slide.slides) {
+                            q = p + lo * (q - p);
+                            s[i] = s[i].norm() * slide.along * slide.line;
+                            ++result.slid;
+                        } else {
+                            q = p + hi * (q - p) + kPastSurface * spacing_ * dir;
+                            m.arrested = true;
+                            ++result.leftBody;
+                        }
                     } else {
                         m.free = false;
                         const int crack = queries.crackAt(q);

@@ -4,10 +4,11 @@
 // follow the coarse BEM front. Each marker moves by the advance (distance x direction)
 // interpolated along the coarse front edge nearest to it, in sub-steps of at most half a
 // voxel; markers are inserted and removed to keep neighbours 0.5 to 2 spacings apart, the
-// per-marker steps are lightly smoothed, and a marker stops for good when it leaves the body
-// or enters a crack already cut into it (a marker outside the body since it was made, on a seed
-// poking through the surface, follows the coarse front freely until it enters the body).
-// Sheets growing together (one event) pass through each other as the coarse BEM sheets do
+// per-marker steps are lightly smoothed. A marker meeting the surface slides along it where the
+// coarse front would (SurfaceSlide.h: the ends of a through crack run along a thin body's faces),
+// else it stops for good there; it also stops when it enters a crack already cut into it (a marker outside
+// the body since it was made, on a seed poking through the surface, follows the coarse front freely until it
+// enters the body). Sheets growing together (one event) pass through each other as the coarse BEM sheets do
 // (CrackGrowth.h: only a coarse node crossing a coarse triangle stops): their markers stop at
 // another sheet's swept surface only when extend() carries a stopped coarse front on to its
 // obstacle. Stopping them at every close pass turned the coarse sheets' crossings into
@@ -35,6 +36,8 @@ namespace btfracture {
 struct FrontQueries {
     std::function<bool(const Eigen::Vector3d&)> insideBody;  // inside the uncut solid
     std::function<int(const Eigen::Vector3d&)> crackAt;      // id of the crack slab at p, -1 if none
+    // Outward unit normal of the uncut solid's surface near p; without it markers never slide.
+    std::function<Eigen::Vector3d(const Eigen::Vector3d&)> surfaceNormal;
 };
 
 // One coarse (BEM) front of a sheet for one step.
@@ -62,6 +65,7 @@ struct FrontAdvanceResult {
     int substeps = 0;
     int arrestedMarkers = 0;            // newly arrested, of which:
     int leftBody = 0;                   //   at the body's surface
+    int slid = 0;                       // markers that met the surface and slid along it (SurfaceSlide.h)
     int metCrack = 0;                   //   in a crack already cut (FrontQueries::crackAt)
     int metSheet = 0;                   //   at another sheet's swept surface (extend() only)
     std::set<int> arrestedCoarseNodes;  // coarse nodes that once moved and whose markers all stopped

@@ -1,21 +1,13 @@
 #include <btFracture/fracture/CrackGrowth.h>
 
 #include <btFracture/core/Intersection.h>
+#include <btFracture/fracture/SurfaceSlide.h>
 
 #include <algorithm>
 #include <cmath>
 
 namespace btfracture {
 namespace {
-
-// A front node meeting the surface slides along it only where its crack plane is at least 45
-// degrees from the surface's tangent plane and its growth direction within 50 degrees of the
-// line the two planes share: the end of a front crossing the surface, not a front arriving
-// along it (such as the nodes of a crack's mouth, which point out of the body). The 50 degrees
-// are chosen, not derived: with 45 the 2 cm window pane scene no longer separates; from 55 on the
-// mouth nodes of the growing slab cracks (tests/crack) slide and EST leaves FULL by up to 32 %.
-const double kSlideMaxCosine = std::sqrt(0.5);
-const double kSlideMinCosine = std::cos(50.0 * M_PI / 180.0);
 
 struct Obstacle {
     double t = 1.0;            // fraction of the segment that stays clear
@@ -98,19 +90,12 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
         Eigen::Vector3d target = p + (blocked ? 0.9 * o.t : 1.0) * step;
         bool stops = blocked;
         if (blocked && !o.crack) {
-            Eigen::Vector3d crackNormal = advance.direction.cross(frontTangent(cracks, neighbours, node));
-            const Eigen::Vector3d& surfaceNormal = body.normal(o.surfaceTriangle);
-            // Only a crack plane that meets the surface steeply slides (a shallow one would cut a
-            // thin flake off along the surface).
-            const bool steep = crackNormal.norm() > 0.0 &&
-                               std::abs(crackNormal.normalized().dot(surfaceNormal)) <= kSlideMaxCosine;
-            Eigen::Vector3d line = crackNormal.cross(surfaceNormal);
-            const double along = steep ? line.normalized().dot(advance.direction) : 0.0;
-            if (steep) line = (along >= 0.0 ? 1.0 : -1.0) * line.normalized();
-            const Eigen::Vector3d slide = (1.0 - 0.9 * o.t) * advance.distance * std::abs(along) * line;
-            if (steep && std::abs(along) >= kSlideMinCosine && slide.norm() >= 0.05 * maxEdge) {
-                const Obstacle again = firstObstacle(cracks, node, target, target + slide, body);
-                target += (again.t < 1.0 ? 0.9 * again.t : 1.0) * slide;
+            const SurfaceSlide slide = surfaceSlide(advance.direction, frontTangent(cracks, neighbours, node),
+                                                    body.normal(o.surfaceTriangle));
+            const Eigen::Vector3d move = (1.0 - 0.9 * o.t) * advance.distance * slide.along * slide.line;
+            if (slide.slides && move.norm() >= 0.05 * maxEdge) {
+                const Obstacle again = firstObstacle(cracks, node, target, target + move, body);
+                target += (again.t < 1.0 ? 0.9 * again.t : 1.0) * move;
                 stops = again.crack;
             }
         }

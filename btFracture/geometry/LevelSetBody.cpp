@@ -559,6 +559,12 @@ bool LevelSetBody::isInsideSolid(const Eigen::Vector3d& p) const {
     return trilinear(impl_->solid->getConstAccessor(), p, impl_->voxelSize) < 0.0;
 }
 
+Eigen::Vector3d LevelSetBody::solidNormal(const Eigen::Vector3d& p) const {
+    requireFinitePoint(p, impl_->name, "solidNormal");
+    const Eigen::Vector3d g = trilinearGradient(impl_->solid->getConstAccessor(), p, impl_->voxelSize);
+    return g.norm() > 0.0 ? Eigen::Vector3d(g.normalized()) : Eigen::Vector3d::Zero();
+}
+
 bool LevelSetBody::isInsideCrack(const Eigen::Vector3d& p) const {
     return crackAt(p) >= 0;
 }

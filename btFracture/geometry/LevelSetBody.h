@@ -71,6 +71,9 @@ public:
     bool isInsideObject(const Eigen::Vector3d& p) const;
     // True if p is inside the uncut solid (cracks ignored): where a crack front may still grow.
     bool isInsideSolid(const Eigen::Vector3d& p) const;
+    // Outward unit normal of the uncut solid's level sets at p (its distance field's gradient);
+    // zero where the gradient vanishes (beyond the narrow band).
+    Eigen::Vector3d solidNormal(const Eigen::Vector3d& p) const;
     // True if p is inside the slab of an existing crack.
     bool isInsideCrack(const Eigen::Vector3d& p) const;
     // Id of the crack whose slab contains p, or -1 if p is in no crack slab.

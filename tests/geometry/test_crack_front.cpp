@@ -5,6 +5,7 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/fracture/CrackFront.h>
 #include <btFracture/geometry/LevelSetBody.h>
+#include <btFracture/geometry/LevelSetFrontQueries.h>
 
 #include <gtest/gtest.h>
 
@@ -56,7 +57,7 @@ struct SpacingRange {
 };
 
 FrontQueries unbounded() {
-    return {[](const Eigen::Vector3d&) { return true; }, [](const Eigen::Vector3d&) { return -1; }};
+    return {[](const Eigen::Vector3d&) { return true; }, [](const Eigen::Vector3d&) { return -1; }, {}};
 }
 
 // A penny front stretched from 3 to 60 voxels radius with a wavy speed (curvature varies along
@@ -140,12 +141,16 @@ TEST(CrackFront, MarkersFollowTheCoarseFront) {
 }
 
 // A front reaching the surface of a sphere (radius 30 voxels) stops there: every marker ends
-// arrested within a voxel of the surface, and every coarse node is reported arrested.
+// arrested within a voxel of the surface, and every coarse node is reported arrested. The
+// markers may slide (the sphere's normal is given) but arrive within 16 degrees of square to the
+// surface, far from the 50 degrees of SurfaceSlide.h.
 TEST(CrackFront, FrontReachingTheSurfaceArrestsThere) {
     const double voxel = 1e-3, R = 30.0 * voxel;
     const Eigen::Vector3d centre(0.004, -0.003, 0.002);
-    const FrontQueries sphere{[=](const Eigen::Vector3d& p) { return (p - centre).norm() < R; },
-                              [](const Eigen::Vector3d&) { return -1; }};
+    const FrontQueries sphere{
+        [=](const Eigen::Vector3d& p) { return (p - centre).norm() < R; },
+        [](const Eigen::Vector3d&) { return -1; },
+        [=](const Eigen::Vector3d& p) { return Eigen::Vector3d((p - centre).normalized()); }};
     CrackFronts fronts(voxel);
     // Off-centre penny in a tilted plane: markers meet the surface at different steps.
     const Eigen::Vector3d u = Eigen::Vector3d(1, 0, 0.3).normalized(), v = Eigen::Vector3d(0, 1, 0);
@@ -266,6 +271,92 @@ TEST(CrackFront, FrontsExtendedTogetherMeetInsteadOfCrossing) {
     EXPECT_LT(farA, -45.0 * v);  // -20 - 16 - 10 voxels, to within a voxel of resampling
 }
 
+// The ends of a through crack in a plate 8 voxels thick run along its faces (SurfaceSlide.h): the
+// coarse front crosses the thickness, its two nodes grow 45 degrees out of the faces and slide
+// along them (emulated: clamped just inside, as CrackGrowth does). With the surface normal the
+// markers slide too: they stay inside, no coarse node is stopped, and the swept surface spans the
+// plate's thickness wherever the crack has passed. Without it they stop 0.75 voxel past the faces.
+TEST(CrackFront, MarkersSlideAlongTheFacesOfAThinPlate) {
+    const double voxel = 1e-3, h = 4.0 * voxel, inset = 0.2 * voxel, speed = 1.5 * voxel;
+    const double a = 45.0 * kPi / 180.0;
+    auto run = [&](bool slide, double& gap, double& outside, int& slid, int& arrestedCoarse) {
+        FrontQueries plate{[=](const Eigen::Vector3d& p) { return std::abs(p.z()) < h; },
+                           [](const Eigen::Vector3d&) { return -1; },
+                           {}};
+        if (slide)
+            plate.surfaceNormal = [](const Eigen::Vector3d& p) {
+                return Eigen::Vector3d(0.0, 0.0, p.z() >= 0.0 ? 1.0 : -1.0);
+            };
+        CoarseFront coarse;
+        coarse.position = {{0, {0.0, 0.0, -h + inset}}, {2, {0.0, 0.0, h - inset}}};
+        coarse.advance = {{0, speed * Eigen::Vector3d(std::cos(a), 0.0, -std::sin(a))},
+                          {2, speed * Eigen::Vector3d(std::cos(a), 0.0, std::sin(a))}};
+        coarse.edges = {{0, 2}};
+        CrackFronts fronts(voxel);
+        fronts.addSheet(0, coarse, plate);
+        slid = 0;
+        std::set<int> stopped;
+        for (int s = 0; s < 10; ++s) {
+            const FrontAdvanceResult r = fronts.advance({{0, coarse}}, plate);
+            slid += r.slid;
+            for (int node : r.arrestedCoarseNodes) {
+                coarse.advance[node].setZero();
+                stopped.insert(node);
+            }
+            for (auto& [node, p] : coarse.position) {
+                p += coarse.advance.at(node);
+                p.z() = std::clamp(p.z(), -h + inset, h - inset);
+            }
+        }
+        arrestedCoarse = static_cast<int>(stopped.size());
+        outside = 0.0;
+        for (const FrontMarker& m : fronts.chains(0).front().markers)
+            outside = std::max(outside, std::abs(m.position.z()) - h);
+        // Uncovered length of the faces-to-faces lines x = 1 .. 8 voxels in the swept surface
+        // (the ends' coarse nodes reach x = 11.5 voxels).
+        const TriangleMesh swept = fronts.takeSwept().at(0);
+        gap = 0.0;
+        for (int k = 1; k <= 8; ++k) {
+            const double x = k * voxel;
+            std::vector<std::pair<double, double>> spans;
+            for (const auto& tri : swept.triangles) {
+                std::vector<double> zs;
+                for (int e = 0; e < 3; ++e) {
+                    const Eigen::Vector3d &p = swept.vertices[tri[e]], &q = swept.vertices[tri[(e + 1) % 3]];
+                    if ((p.x() - x) * (q.x() - x) > 0.0 || p.x() == q.x()) continue;
+                    zs.push_back(p.z() + (x - p.x()) / (q.x() - p.x()) * (q.z() - p.z()));
+                }
+                if (zs.size() >= 2)
+                    spans.emplace_back(*std::min_element(zs.begin(), zs.end()),
+                                       *std::max_element(zs.begin(), zs.end()));
+            }
+            std::sort(spans.begin(), spans.end());
+            double reached = -h + voxel, covered = 0.0;  // the lines' parts more than a voxel from the faces
+            for (const auto& [lo, hi] : spans) {
+                const double from = std::max(lo, reached), to = std::min(hi, h - voxel);
+                if (to > from) covered += to - from;
+                reached = std::max(reached, std::min(hi, h - voxel));
+            }
+            gap = std::max(gap, 2.0 * (h - voxel) - covered);
+        }
+    };
+    double gap = 0.0, outside = 0.0, gapStopped = 0.0, outsideStopped = 0.0;
+    int slid = 0, slidStopped = 0, arrested = 0, arrestedStopped = 0;
+    run(true, gap, outside, slid, arrested);
+    run(false, gapStopped, outsideStopped, slidStopped, arrestedStopped);
+    std::printf(
+        "sliding: %d slides, %d coarse nodes arrested, largest gap %.2f voxels, markers up to %.2f "
+        "voxels outside; stopping at the faces: %d arrested, gap %.2f voxels, up to %.2f voxels outside\n",
+        slid, arrested, gap / voxel, outside / voxel, arrestedStopped, gapStopped / voxel,
+        outsideStopped / voxel);
+    EXPECT_GT(slid, 0);
+    EXPECT_EQ(arrested, 0);
+    EXPECT_LT(gap, 0.05 * voxel);
+    EXPECT_LE(outside, 0.0);  // sliding markers stay inside
+    EXPECT_EQ(slidStopped, 0);
+    EXPECT_GT(outsideStopped, 0.5 * voxel);
+}
+
 // A body that lost its x > 0 half after a penny front grew to 8 voxels (§5.3: the kept
 // fragment): the markers now outside are freed and follow the coarse front 5 voxels on, while
 // without freeOutside() they stop where they are on their next move.
@@ -274,7 +365,8 @@ TEST(CrackFront, MarkersOutsideAKeptFragmentFollowTheCoarseFront) {
     const Eigen::Vector3d u = Eigen::Vector3d::UnitX(), v = Eigen::Vector3d::UnitY();
     bool halved = false;
     const FrontQueries body{[&](const Eigen::Vector3d& p) { return !halved || p.x() < 0.0; },
-                            [](const Eigen::Vector3d&) { return -1; }};
+                            [](const Eigen::Vector3d&) { return -1; },
+                            {}};
     auto run = [&](bool release, int& freed, double& reach) {
         halved = false;
         CrackFronts fronts(voxel);
@@ -343,11 +435,6 @@ TEST(CrackFront, BadInputIsRejected) {
 const Eigen::Vector3d kBoxSize(0.10, 0.06, 0.05);
 const double kVoxel = 0.10 / 64;
 
-FrontQueries levelSetQueries(const LevelSetBody& body) {
-    return {[&body](const Eigen::Vector3d& p) { return body.isInsideSolid(p); },
-            [&body](const Eigen::Vector3d& p) { return body.crackAt(p); }};
-}
-
 // Distance from p to the box surface [m] (> 0 outside).
 double boxDistance(const Eigen::Vector3d& p) {
     const Eigen::Vector3d q = (p - 0.5 * kBoxSize).cwiseAbs() - 0.5 * kBoxSize;
@@ -365,7 +452,7 @@ CoarseFront seed(CrackFronts& fronts, int sheet, const LevelSetBody& body, const
     for (const auto& [node, p] : f.position) fan.vertices.push_back(p);
     for (int k = 0; k < 6; ++k) fan.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
     fronts.addSurface(sheet, fan);
-    fronts.addSheet(sheet, f, levelSetQueries(body));
+    fronts.addSheet(sheet, f, levelSetFrontQueries(body));
     return f;
 }
 
@@ -373,14 +460,17 @@ CoarseFront seed(CrackFronts& fronts, int sheet, const LevelSetBody& body, const
 int growUntilArrested(CrackFronts& fronts, int sheet, CoarseFront& coarse, const LevelSetBody& body,
                       int steps, SpacingRange& range) {
     for (int s = 0; s < steps; ++s) {
-        const FrontAdvanceResult r = fronts.advance({{sheet, coarse}}, levelSetQueries(body));
+        const FrontAdvanceResult r = fronts.advance({{sheet, coarse}}, levelSetFrontQueries(body));
         for (int node : r.arrestedCoarseNodes) coarse.advance[node].setZero();
         moveCoarse(coarse);
         range.add(fronts);
-        bool all = true;
+        bool all = true, coarseStopped = true;
         for (const MarkerChain& c : fronts.chains(sheet))
             for (const FrontMarker& m : c.markers) all = all && m.arrested;
-        if (all) return s + 1;
+        for (const auto& [node, a] : coarse.advance) coarseStopped = coarseStopped && a.norm() == 0.0;
+        // Done when every marker stopped, or every coarse node (a marker that slid into a corner
+        // of the faces keeps still once its coarse nodes stopped; the engine's extend() ends it).
+        if (all || coarseStopped) return s + 1;
     }
     return -1;
 }
