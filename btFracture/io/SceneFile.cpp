@@ -240,7 +240,7 @@ private:
     // effects: output formats, the run seed and the per-body fracture settings (after the bodies).
     void effects(const Json& value, const std::string& path, Scene& scene) const {
         requireObject(value, path, "an object");
-        allowOnly(value, path, {"outputs", "seed", "fracture"});
+        allowOnly(value, path, {"outputs", "seed", "crack_cut", "fracture"});
         if (value.contains("outputs")) {
             const Json& list = value["outputs"];
             const std::string lpath = child(path, "outputs");
@@ -257,6 +257,9 @@ private:
             scene.effects.outputs = f;
         }
         if (value.contains("seed")) scene.effects.seed = seed(value["seed"], child(path, "seed"));
+        if (value.contains("crack_cut"))
+            scene.effects.voxelFronts =
+                choice(value["crack_cut"], child(path, "crack_cut"), {"markers", "coarse_sheet"}) == 0;
         if (value.contains("fracture")) {
             const Json& fracture = value["fracture"];
             const std::string fpath = child(path, "fracture");

@@ -112,6 +112,9 @@ struct SceneEffects {
     // Run seed, combined with every body's noise seed; --seed overrides it. Runs with the same
     // seed give the same output.
     std::uint64_t seed = 0;
+    // What a fracture event cuts into the level set (BemFractureEngineSettings::voxelFronts):
+    // "markers" (the surface swept by the voxel-resolution fronts, default) or "coarse_sheet".
+    bool voxelFronts = true;
 };
 
 // Settings of one run that do not belong to the scene file (command line).

@@ -69,6 +69,7 @@ TEST(SceneFile, DefaultsAndValues) {
     EXPECT_TRUE(s.effects.outputs.obj);
     EXPECT_FALSE(s.effects.outputs.csv || s.effects.outputs.png || s.effects.outputs.vdb);
     EXPECT_EQ(s.effects.seed, 0u);
+    EXPECT_TRUE(s.effects.voxelFronts);  // the marker cut
     EXPECT_EQ(s.outputs.pngEveryNSteps, 10);
     EXPECT_EQ(s.outputs.image.width, 640);
 }
@@ -84,7 +85,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
       "outputs": {"png_every_n_steps": 5,
                   "image": {"width": 320, "height": 200, "projection": "orthographic", "shading": "flat",
                             "view": [0, 1, 0]}},
-      "effects": {"outputs": ["png", "csv", "obj"], "seed": 42,
+      "effects": {"outputs": ["png", "csv", "obj"], "seed": 42, "crack_cut": "coarse_sheet",
                   "fracture": {"pane": {"method": "hybrid", "hybrid_threshold": 3000, "refracture_depth": 2,
                                         "impulse_threshold": 0.5,
                                         "material_noise": {"amplitude": 0.2, "seed": 7}},
@@ -114,6 +115,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_TRUE(s.effects.outputs.obj && s.effects.outputs.csv && s.effects.outputs.png);
     EXPECT_FALSE(s.effects.outputs.vdb);
     EXPECT_EQ(s.effects.seed, 42u);
+    EXPECT_FALSE(s.effects.voxelFronts);
     EXPECT_EQ(s.outputs.pngEveryNSteps, 5);
     EXPECT_EQ(s.outputs.image.width, 320);
     EXPECT_EQ(s.outputs.image.height, 200);
@@ -144,6 +146,8 @@ TEST(SceneFile, BadEffectsNameTheirPath) {
          R"(test.json: effects.outputs[1]: listed twice: "png")"},
         {R"("effects": {"outputs": "png"})", "test.json: effects.outputs: expected an array of"},
         {R"("effects": {"seed": -3})", "test.json: effects.seed: expected an integer seed >= 0, got -3"},
+        {R"("effects": {"crack_cut": "voxels"})",
+         R"(test.json: effects.crack_cut: expected "markers" or "coarse_sheet", got "voxels")"},
         {R"("effects": {"fracture": {"bal": true}})",
          "test.json: effects.fracture.bal: no body named 'bal' (bodies: ground, ball)"},
         {R"("effects": {"fracture": {"ground": true}})",
@@ -165,7 +169,7 @@ TEST(SceneFile, BadEffectsNameTheirPath) {
         {R"("effects": {"fracture": {"ball": {"impulse_threshold": 0}}})",
          "test.json: effects.fracture.ball.impulse_threshold: expected a positive number [N s], got 0"},
         {R"("effects": {"fractures": {}})",
-         "test.json: effects.fractures: unknown key (expected one of: outputs, seed, fracture)"},
+         "test.json: effects.fractures: unknown key (expected one of: outputs, seed, crack_cut, fracture)"},
         {R"("outputs": {"image": {"width": 8}})",
          "test.json: outputs.image.width: expected an integer in [16, 8192], got 8"},
         {R"("outputs": {"image": {"projection": "fisheye"}})",

@@ -60,7 +60,9 @@ Outcome runScenario(const Expect& expect) {
             b.fracture.collisionTriangleTarget = std::min(b.fracture.collisionTriangleTarget, 2000);
             b.fracture.maxRefractureDepth = 0;
         }
-    FractureSceneWorldFactory factory(scene.effects.seed);
+    BemFractureEngineSettings engine;
+    engine.voxelFronts = scene.effects.voxelFronts;
+    FractureSceneWorldFactory factory(scene.effects.seed, engine);
     SceneWorld world(scene, factory);
     auto* fractureWorld = dynamic_cast<btFractureDynamicsWorld*>(&world.world());
     EXPECT_NE(fractureWorld, nullptr);
