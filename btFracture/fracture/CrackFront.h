@@ -65,9 +65,9 @@ struct FrontAdvanceResult {
     int substeps = 0;
     int arrestedMarkers = 0;            // newly arrested, of which:
     int leftBody = 0;                   //   at the body's surface
-    int slid = 0;                       // markers that met the surface and slid along it (SurfaceSlide.h)
     int metCrack = 0;                   //   in a crack already cut (FrontQueries::crackAt)
     int metSheet = 0;                   //   at another sheet's swept surface (extend() only)
+    int slid = 0;                       // markers that met the surface and slid along it (SurfaceSlide.h)
     std::set<int> arrestedCoarseNodes;  // coarse nodes that once moved and whose markers all stopped
 };
 

@@ -19,8 +19,9 @@ SurfaceSlide surfaceSlide(const Eigen::Vector3d& growth, const Eigen::Vector3d& 
     const bool steep =
         crackNormal.norm() > 0.0 && std::abs(crackNormal.normalized().dot(surfaceNormal)) <= kSlideMaxCosine;
     if (!steep) return s;
-    if (crackNormal.cross(surfaceNormal).norm() <= 0.0) return s;  // no normal known there
-    const Eigen::Vector3d line = crackNormal.cross(surfaceNormal).normalized();
+    const Eigen::Vector3d shared = crackNormal.cross(surfaceNormal);
+    if (shared.norm() <= 0.0) return s;  // no normal known there
+    const Eigen::Vector3d line = shared.normalized();
     const double along = line.dot(growth);
     s.line = (along >= 0.0 ? 1.0 : -1.0) * line;
     s.along = std::abs(along);

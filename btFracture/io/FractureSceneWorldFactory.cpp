@@ -22,9 +22,11 @@ FractureSceneWorldFactory::FractureSceneWorldFactory(std::uint64_t runSeed,
 
 std::unique_ptr<btDiscreteDynamicsWorld> FractureSceneWorldFactory::createWorld(
     btCollisionDispatcher& dispatcher, btBroadphaseInterface& broadphase, btConstraintSolver& solver,
-    btCollisionConfiguration& configuration, const Scene&) const {
+    btCollisionConfiguration& configuration, const Scene& scene) const {
     auto world = std::make_unique<btFractureDynamicsWorld>(&dispatcher, &broadphase, &solver, &configuration);
-    auto engine = std::make_unique<BemFractureEngine>(engine_);
+    BemFractureEngineSettings settings = engine_;
+    settings.voxelFronts = scene.effects.voxelFronts;
+    auto engine = std::make_unique<BemFractureEngine>(settings);
     if (cutObserver_) engine->setCutObserver(cutObserver_);
     world->setFractureEngine(std::move(engine));
     return world;

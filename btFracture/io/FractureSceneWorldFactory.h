@@ -17,6 +17,7 @@ namespace btfracture {
 
 class FractureSceneWorldFactory : public SceneWorldFactory {
 public:
+    // The engine's crack cut (voxelFronts) comes from each scene's effects.crack_cut.
     explicit FractureSceneWorldFactory(std::uint64_t runSeed, const BemFractureEngineSettings& engine = {});
 
     // The engine's cut observer (BemFractureEngine::setCutObserver), installed on the world's engine.

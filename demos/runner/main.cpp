@@ -359,9 +359,7 @@ int run(const Options& options) {
         setup = setUp(options);
         // Breakable bodies: btFractureDynamicsWorld with the BEM engine; the cut observer saves
         // every fractured level set when the scene asks for VDB output.
-        BemFractureEngineSettings engine;
-        engine.voxelFronts = setup.scene.effects.voxelFronts;
-        FractureSceneWorldFactory fractureFactory(setup.scene.effects.seed, engine);
+        FractureSceneWorldFactory fractureFactory(setup.scene.effects.seed);
         if (setup.scene.effects.outputs.vdb)
             fractureFactory.setCutObserver(
                 [&](const btFractureRigidBody& body, const LevelSetBody& levelSet) {

@@ -275,7 +275,8 @@ TEST(CrackFront, FrontsExtendedTogetherMeetInsteadOfCrossing) {
 // coarse front crosses the thickness, its two nodes grow 45 degrees out of the faces and slide
 // along them (emulated: clamped just inside, as CrackGrowth does). With the surface normal the
 // markers slide too: they stay inside, no coarse node is stopped, and the swept surface spans the
-// plate's thickness wherever the crack has passed. Without it they stop 0.75 voxel past the faces.
+// plate's thickness wherever the crack has passed. Without it they stop 0.75 voxel past the faces
+// along their 45-degree direction (0.53 voxel outside).
 TEST(CrackFront, MarkersSlideAlongTheFacesOfAThinPlate) {
     const double voxel = 1e-3, h = 4.0 * voxel, inset = 0.2 * voxel, speed = 1.5 * voxel;
     const double a = 45.0 * kPi / 180.0;

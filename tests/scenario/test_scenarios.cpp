@@ -60,9 +60,7 @@ Outcome runScenario(const Expect& expect) {
             b.fracture.collisionTriangleTarget = std::min(b.fracture.collisionTriangleTarget, 2000);
             b.fracture.maxRefractureDepth = 0;
         }
-    BemFractureEngineSettings engine;
-    engine.voxelFronts = scene.effects.voxelFronts;
-    FractureSceneWorldFactory factory(scene.effects.seed, engine);
+    FractureSceneWorldFactory factory(scene.effects.seed);
     SceneWorld world(scene, factory);
     auto* fractureWorld = dynamic_cast<btFractureDynamicsWorld*>(&world.world());
     EXPECT_NE(fractureWorld, nullptr);
