@@ -55,6 +55,7 @@ void addTally(FrontAdvanceResult& into, const FrontAdvanceResult& r) {
     into.slid += r.slid;
     into.metCrack += r.metCrack;
     into.metSheet += r.metSheet;
+    into.largestTargetShift = std::max(into.largestTargetShift, r.largestTargetShift);
 }
 
 // The coarse front of every sheet in the state frame, with each node's advance of this step.
@@ -76,9 +77,9 @@ std::map<int, CoarseFront> coarseFronts(const CrackMesh& cracks, const std::map<
 
 // FractureSolver's growth observer (issue 5): moves the markers by this step's coarse advances
 // (a new sheet gets markers, and its seed triangles join the surface to cut) and returns the
-// coarse nodes whose markers all stopped.
-std::vector<int> advanceMarkers(BemFractureState& s, const CrackMesh& cracks,
-                                const std::map<int, FrontAdvance>& advances) {
+// coarse nodes whose markers all stopped, with where they stopped (read off the markers).
+FractureSolver::GrowthFeedback advanceMarkers(BemFractureState& s, const CrackMesh& cracks,
+                                              const std::map<int, FrontAdvance>& advances) {
     if (!s.fronts) s.fronts = std::make_unique<CrackFronts>(s.levelSet->voxelSize());
     const Eigen::Vector3d offset = s.solver->mesh().offset();
     const FrontQueries queries = levelSetFrontQueries(*s.levelSet);
@@ -98,7 +99,13 @@ std::vector<int> advanceMarkers(BemFractureState& s, const CrackMesh& cracks,
     }
     const FrontAdvanceResult r = s.fronts->advance(fronts, queries);
     addTally(s.frontTally, r);
-    return std::vector<int>(r.arrestedCoarseNodes.begin(), r.arrestedCoarseNodes.end());
+    FractureSolver::GrowthFeedback feedback;
+    for (const int node : r.arrestedCoarseNodes) {
+        const auto target = r.coarseTargets.find(node);  // none: it did not aim to move
+        feedback.stopped[node] =
+            target != r.coarseTargets.end() ? Eigen::Vector3d(target->second - offset) : cracks.node(node);
+    }
+    return feedback;
 }
 
 Eigen::Vector3d toState(const BemFractureState& s, const Eigen::Vector3d& bodyPoint) {
@@ -281,7 +288,9 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
              markers, " markers (", active, " active), ", t.substeps, " sub-steps; arrested ",
              t.arrestedMarkers, " (", t.leftBody, " at the surface, ", t.metCrack, " in cut cracks, ",
              t.metSheet, " at other sheets, the rest at the end of their extension), ", t.slid,
-             " slides along the surface, ", s.fronts->sweptTriangles(), " swept triangles to cut");
+             " slides along the surface, ", s.fronts->sweptTriangles(),
+             " swept triangles to cut; markers up to ", t.largestTargetShift / s.levelSet->voxelSize(),
+             " voxels from where their coarse nodes aimed");
         s.frontTally = FrontAdvanceResult();
         out = s.fronts->takeSwept();
     }

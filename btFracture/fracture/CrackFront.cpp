@@ -286,6 +286,8 @@ FrontAdvanceResult CrackFronts::advance(const std::map<int, CoarseFront>& fronts
         }
     }
     FrontAdvanceResult result = sweep(steps, queries, false);
+    for (const auto& [sheet, front] : fronts)
+        if (hasSheet(sheet)) readCoarseTargets(sheet, front, result);
     // Arrest feedback: a coarse node whose markers once moved and now all stopped stops too (one
     // whose markers all started outside, e.g. on a seed poking through the surface, moves on).
     // "Once", not "in this advance": a node's last moving marker may have passed to the
@@ -310,6 +312,36 @@ FrontAdvanceResult CrackFronts::advance(const std::map<int, CoarseFront>& fronts
         }
     }
     return result;
+}
+
+void CrackFronts::readCoarseTargets(int sheet, const CoarseFront& front, FrontAdvanceResult& result) const {
+    // Candidates: the chain edges with a marker of the node at either end (markers keep the node
+    // they were interpolated from, so a node's markers sit around it along the front).
+    std::map<int, std::pair<double, Eigen::Vector3d>> best;  // node -> (squared distance, point)
+    const auto offer = [&](int node, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+        const auto wanted = front.advance.find(node);
+        if (wanted == front.advance.end() || wanted->second.norm() <= 0.0) return;
+        const Eigen::Vector3d aim = front.position.at(node) + wanted->second;
+        const Eigen::Vector3d q = a + segmentParameter(aim, a, b) * (b - a);
+        const double d = (q - aim).squaredNorm();
+        const auto it = best.find(node);
+        if (it == best.end() || d < it->second.first) best[node] = {d, q};
+    };
+    for (const MarkerChain& chain : sheets_.at(sheet)) {
+        const std::vector<FrontMarker>& ms = chain.markers;
+        const std::size_t n = ms.size(), edges = chain.closed ? n : (n > 0 ? n - 1 : 0);
+        if (n == 1 && front.position.count(ms[0].coarseNode))
+            offer(ms[0].coarseNode, ms[0].position, ms[0].position);
+        for (std::size_t i = 0; i < edges; ++i) {
+            const FrontMarker &a = ms[i], &b = ms[(i + 1) % n];
+            for (const int node : {a.coarseNode, b.coarseNode})
+                if (front.position.count(node)) offer(node, a.position, b.position);
+        }
+    }
+    for (const auto& [node, found] : best) {
+        result.coarseTargets[node] = found.second;
+        result.largestTargetShift = std::max(result.largestTargetShift, std::sqrt(found.first));
+    }
 }
 
 FrontAdvanceResult CrackFronts::extend(const std::map<int, std::set<int>>& stoppedNodes, double distance,

@@ -1,10 +1,11 @@
 #pragma once
 // The high-resolution crack front (paper §3: "we propagate the crack-front at high resolution";
 // Hahn & Wojtan 2015 §5): per crack sheet, ordered marker polylines about one voxel apart that
-// follow the coarse BEM front. Each marker moves by the advance (distance x direction)
+// lead the coarse BEM front. Each marker moves by the advance (distance x direction)
 // interpolated along the coarse front edge nearest to it, in sub-steps of at most half a
-// voxel; markers are inserted and removed to keep neighbours 0.5 to 2 spacings apart, the
-// per-marker steps are lightly smoothed. A marker meeting the surface slides along it where the
+// voxel; a coarse node whose markers all stopped stops level with them (advance():
+// coarseTargets). Markers are inserted and removed to keep neighbours 0.5 to 2 spacings apart,
+// the per-marker steps are lightly smoothed. A marker meeting the surface slides along it where the
 // coarse front would (SurfaceSlide.h: the ends of a through crack run along a thin body's faces),
 // else it stops for good there; it also stops when it enters a crack already cut into it (a marker outside
 // the body since it was made, on a seed poking through the surface, follows the coarse front freely until it
@@ -69,6 +70,12 @@ struct FrontAdvanceResult {
     int metSheet = 0;                   //   at another sheet's swept surface (extend() only)
     int slid = 0;                       // markers that met the surface and slid along it (SurfaceSlide.h)
     std::set<int> arrestedCoarseNodes;  // coarse nodes that once moved and whose markers all stopped
+    // advance() only: per coarse node that was to move, the point of its markers' polyline
+    // closest to its aim, position + advance [m, the caller's frame]: near the aim where the
+    // markers followed the coarse front, short of or beside it where they stopped at or slid
+    // along the level set's surface. The engine ends a stopped node's step level with it.
+    std::map<int, Eigen::Vector3d> coarseTargets;
+    double largestTargetShift = 0.0;  // max |target - aim| [m]
 };
 
 class CrackFronts {
@@ -90,7 +97,8 @@ public:
 
     // One coarse step for every sheet in `fronts` (sheets without markers are ignored): each marker
     // moves by the advance interpolated along its sheet's nearest coarse front edge, stopping at
-    // the surface and in cut cracks, not at other sheets' swept surfaces.
+    // the surface and in cut cracks, not at other sheets' swept surfaces. Returns where the
+    // moved markers put each coarse node (FrontAdvanceResult::coarseTargets).
     FrontAdvanceResult advance(const std::map<int, CoarseFront>& fronts, const FrontQueries& queries);
     // Moves the still active markers whose coarse node is in `stoppedNodes[sheet]` up to
     // `distance` [m] further along their last direction, then stops them for good (the coarse
@@ -117,6 +125,7 @@ private:
     FrontAdvanceResult sweep(std::map<int, std::vector<std::vector<Eigen::Vector3d>>>& steps,
                              const FrontQueries& queries, bool stopAtSheets);
     void resample(int sheet, MarkerChain& chain, std::vector<Eigen::Vector3d>& steps, Strips& from);
+    void readCoarseTargets(int sheet, const CoarseFront& front, FrontAdvanceResult& result) const;
     void emitStrip(int sheet, const MarkerChain& chain, const Strips& from, std::size_t edge);
     bool nearOtherSheet(int sheet, const Eigen::Vector3d& p) const;
     void addTriangle(std::map<int, TriangleMesh>& store, Cells& cells, int sheet, const Eigen::Vector3d& a,

@@ -1,7 +1,8 @@
 #pragma once
-// Advancing crack fronts on the BEM crack mesh itself (the coarse sheet; issue 5 adds the
-// voxel-resolution markers): every moving front node gets a new node ahead of it, every front
-// edge a strip of new triangles, and over-long new front edges are split. A front node that
+// Advancing crack fronts on the BEM crack mesh itself (the coarse sheet; with voxel-resolution
+// markers, FractureSolver first shortens the step of a node whose markers all stopped to end
+// level with them): every moving front node gets a new node ahead of it, every front edge a
+// strip of new triangles, and over-long new front edges are split. A front node that
 // would cross another crack stops there and is arrested for good; one that would leave the body
 // stops just inside it and slides along the surface as far as its crack plane allows (the ends of
 // a through crack run along the faces), and is arrested when no slide is left.

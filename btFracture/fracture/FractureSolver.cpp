@@ -153,12 +153,19 @@ FractureStepRecord FractureSolver::step(int index) {
             advanceOf(f, field_.fractureToughness(f.position), m.compressiveFactor(), m.poissonRatio(),
                       settings_.frontEdgeLength * meanSize_, settings_.minimumSpeed);
     }
-    // Nodes the observer stops still make this step's move (their markers stopped somewhere
-    // along it) and stop where it ends.
+    // Nodes the observer stops end this step's move level with where their markers stopped
+    // (never past their own step), then stop for good.
     std::vector<int> stopAfter;
-    if (observer_)
-        for (const int node : observer_(cracks_, advances))
-            if (node >= 0 && node < cracks_.nodeCount() && !arrested_[node]) stopAfter.push_back(node);
+    if (observer_) {
+        for (const auto& [node, stop] : observer_(cracks_, advances).stopped) {
+            if (node < 0 || node >= cracks_.nodeCount() || arrested_[node]) continue;
+            stopAfter.push_back(node);
+            const auto a = advances.find(node);
+            if (a != advances.end() && stop.allFinite())
+                a->second.distance =
+                    std::clamp((stop - cracks_.node(node)).dot(a->second.direction), 0.0, a->second.distance);
+        }
+    }
     const GrowthResult growth =
         growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * meanSize_, arrested_);
     int stopped = 0;

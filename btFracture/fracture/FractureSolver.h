@@ -66,11 +66,16 @@ public:
     int gainLimitedNodes() const { return gainLimited_; }
     FractureStepRecord step(int index);  // one propagation step
 
-    // Called in every step with the front advances (BEM frame) before the sheets grow; returns
-    // front nodes that stop for good once this step's move is made (the high-resolution front's
-    // arrest feedback, CrackFront.h: its markers stopped during the move). Unset: no observer.
+    // What the high-resolution front (CrackFront.h) tells the coarse sheet after it moved: the
+    // front nodes whose markers all stopped, each with where they stopped (BEM frame) [m].
+    struct GrowthFeedback {
+        std::map<int, Eigen::Vector3d> stopped;
+    };
+    // Called in every step with the front advances (BEM frame) before the sheets grow. A node it
+    // stops ends this step's move level with its stop point (never past its own step; the
+    // coarse sheet ends where the voxel-resolution cut did) and stops for good. Unset: none.
     using GrowthObserver =
-        std::function<std::vector<int>(const CrackMesh&, const std::map<int, FrontAdvance>&)>;
+        std::function<GrowthFeedback(const CrackMesh&, const std::map<int, FrontAdvance>&)>;
     void setGrowthObserver(GrowthObserver observer) { observer_ = std::move(observer); }
 
     // Front nodes that stopped for good (reached the surface head-on or met another crack).
