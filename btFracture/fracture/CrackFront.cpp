@@ -317,25 +317,26 @@ FrontAdvanceResult CrackFronts::advance(const std::map<int, CoarseFront>& fronts
 void CrackFronts::readCoarseTargets(int sheet, const CoarseFront& front, FrontAdvanceResult& result) const {
     // Candidates: the chain edges with a marker of the node at either end (markers keep the node
     // they were interpolated from, so a node's markers sit around it along the front).
+    std::map<int, Eigen::Vector3d> aims;  // moving node -> position + advance
+    for (const auto& [node, a] : front.advance)
+        if (a.norm() > 0.0 && front.position.count(node)) aims[node] = front.position.at(node) + a;
     std::map<int, std::pair<double, Eigen::Vector3d>> best;  // node -> (squared distance, point)
     const auto offer = [&](int node, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-        const auto wanted = front.advance.find(node);
-        if (wanted == front.advance.end() || wanted->second.norm() <= 0.0) return;
-        const Eigen::Vector3d aim = front.position.at(node) + wanted->second;
-        const Eigen::Vector3d q = a + segmentParameter(aim, a, b) * (b - a);
-        const double d = (q - aim).squaredNorm();
+        const auto aim = aims.find(node);
+        if (aim == aims.end()) return;
+        const Eigen::Vector3d q = a + segmentParameter(aim->second, a, b) * (b - a);
+        const double d = (q - aim->second).squaredNorm();
         const auto it = best.find(node);
         if (it == best.end() || d < it->second.first) best[node] = {d, q};
     };
     for (const MarkerChain& chain : sheets_.at(sheet)) {
         const std::vector<FrontMarker>& ms = chain.markers;
         const std::size_t n = ms.size(), edges = chain.closed ? n : (n > 0 ? n - 1 : 0);
-        if (n == 1 && front.position.count(ms[0].coarseNode))
-            offer(ms[0].coarseNode, ms[0].position, ms[0].position);
+        if (n == 1) offer(ms[0].coarseNode, ms[0].position, ms[0].position);
         for (std::size_t i = 0; i < edges; ++i) {
             const FrontMarker &a = ms[i], &b = ms[(i + 1) % n];
-            for (const int node : {a.coarseNode, b.coarseNode})
-                if (front.position.count(node)) offer(node, a.position, b.position);
+            offer(a.coarseNode, a.position, b.position);
+            if (b.coarseNode != a.coarseNode) offer(b.coarseNode, a.position, b.position);
         }
     }
     for (const auto& [node, found] : best) {

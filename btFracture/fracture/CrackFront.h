@@ -5,11 +5,12 @@
 // interpolated along the coarse front edge nearest to it, in sub-steps of at most half a
 // voxel; a coarse node whose markers all stopped stops level with them (advance():
 // coarseTargets). Markers are inserted and removed to keep neighbours 0.5 to 2 spacings apart,
-// the per-marker steps are lightly smoothed. A marker meeting the surface slides along it where the
-// coarse front would (SurfaceSlide.h: the ends of a through crack run along a thin body's faces),
-// else it stops for good there; it also stops when it enters a crack already cut into it (a marker outside
-// the body since it was made, on a seed poking through the surface, follows the coarse front freely until it
-// enters the body). Sheets growing together (one event) pass through each other as the coarse BEM sheets do
+// the per-marker steps are lightly smoothed. A marker meeting the surface slides along it where
+// the coarse front would (SurfaceSlide.h: the ends of a through crack run along a thin body's
+// faces), else it stops for good there; it also stops when it enters a crack already cut into it
+// (a marker outside the body since it was made, on a seed poking through the surface, follows the
+// coarse front freely until it enters the body). Sheets growing together (one event) pass
+// through each other as the coarse BEM sheets do
 // (CrackGrowth.h: only a coarse node crossing a coarse triangle stops): their markers stop at
 // another sheet's swept surface only when extend() carries a stopped coarse front on to its
 // obstacle. Stopping them at every close pass turned the coarse sheets' crossings into
