@@ -75,6 +75,30 @@ std::map<int, CoarseFront> coarseFronts(const CrackMesh& cracks, const std::map<
     return out;
 }
 
+// The triangles of `sheet` (state frame) past the first s.cutTriangles[sheet]: those are in the
+// level set already, cut by this body or, for a carried sheet, by its parent.
+TriangleMesh uncutTriangles(const BemFractureState& s, const CrackMesh& cracks, int sheet,
+                            const Eigen::Vector3d& offset) {
+    TriangleMesh m;
+    m.name = "crack sheet " + std::to_string(sheet);
+    const auto cut = s.cutTriangles.find(sheet);
+    int skip = cut == s.cutTriangles.end() ? 0 : cut->second;
+    for (int t = 0; t < cracks.triangleCount(); ++t) {
+        if (cracks.sheetOf(t) != sheet || skip-- > 0) continue;
+        const int base = static_cast<int>(m.vertices.size());
+        for (const int node : cracks.triangle(t)) m.vertices.push_back(cracks.node(node) + offset);
+        m.triangles.push_back({base, base + 1, base + 2});
+    }
+    return m;
+}
+
+// Per sheet, how many triangles it has (all of them cut once sheetsToCut has run).
+std::map<int, int> sheetTriangleCounts(const CrackMesh& cracks) {
+    std::map<int, int> count;
+    for (int t = 0; t < cracks.triangleCount(); ++t) ++count[cracks.sheetOf(t)];
+    return count;
+}
+
 // FractureSolver's growth observer (issue 5): moves the markers by this step's coarse advances
 // (a new sheet gets markers, and its seed triangles join the surface to cut) and returns the
 // coarse nodes whose markers all stopped, with where they stopped (read off the markers).
@@ -86,15 +110,7 @@ FractureSolver::GrowthFeedback advanceMarkers(BemFractureState& s, const CrackMe
     const std::map<int, CoarseFront> fronts = coarseFronts(cracks, advances, offset);
     for (const auto& [sheet, front] : fronts) {
         if (s.fronts->hasSheet(sheet)) continue;
-        TriangleMesh seed;
-        seed.name = "crack sheet " + std::to_string(sheet);
-        for (int t = 0; t < cracks.triangleCount(); ++t) {
-            if (cracks.sheetOf(t) != sheet) continue;
-            const int base = static_cast<int>(seed.vertices.size());
-            for (const int node : cracks.triangle(t)) seed.vertices.push_back(cracks.node(node) + offset);
-            seed.triangles.push_back({base, base + 1, base + 2});
-        }
-        s.fronts->addSurface(sheet, seed);
+        s.fronts->addSurface(sheet, uncutTriangles(s, cracks, sheet, offset));
         s.fronts->addSheet(sheet, front, queries);
     }
     const FrontAdvanceResult r = s.fronts->advance(fronts, queries);
@@ -237,26 +253,33 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
         std::vector<int> all(s.carriedCracks.sheetCount());
         for (int i = 0; i < static_cast<int>(all.size()); ++i) all[i] = i;
         CrackMesh moved = s.carriedCracks.extractSheets(all, shift);
+        moved.refreshUnknowns();
+        s.cutTriangles = sheetTriangleCounts(moved);  // the parent cut them
         s.fracture->cracks() = std::move(moved);
         s.carriedCracks = CrackMesh();
     }
 }
 
-// Old sheet id -> new sheet id of the cracks `carried` = cracks.extractSheets(sheets, ...) took
-// over: extractSheets keeps the triangles' order, so the k-th triangle of the selected sheets
-// is the carried mesh's triangle k. The fragment's level set must use the carried ids: its later
-// cuts, crackAt (fronts meeting other cracks) and its own fragments' incomplete cracks refer to
-// the crack mesh the fragment solves with.
-std::map<int, int> carriedSheetIds(const CrackMesh& cracks, const std::vector<int>& sheets,
-                                   CrackMesh& carried) {
+// Old -> new sheet and node ids of the cracks `carried` = cracks.extractSheets(sheets, ...) took
+// over: extractSheets keeps the triangles' order and their corners', so the k-th triangle of
+// the selected sheets is the carried mesh's triangle k. The fragment's level set must use the
+// carried sheet ids (its later cuts, crackAt and its own fragments' incomplete cracks refer to
+// the crack mesh the fragment solves with), its markers both (§5.3).
+struct CarriedIds {
+    std::map<int, int> sheet, node;
+};
+
+CarriedIds carriedIds(const CrackMesh& cracks, const std::vector<int>& sheets, CrackMesh& carried) {
     carried.refreshUnknowns();
-    std::map<int, int> newIdOf;
+    CarriedIds ids;
     int k = 0;
     for (int t = 0; t < cracks.triangleCount(); ++t) {
         if (std::find(sheets.begin(), sheets.end(), cracks.sheetOf(t)) == sheets.end()) continue;
-        newIdOf.emplace(cracks.sheetOf(t), carried.sheetOf(k++));
+        for (int corner = 0; corner < 3; ++corner)
+            ids.node.emplace(cracks.triangle(t)[corner], carried.triangle(k)[corner]);
+        ids.sheet.emplace(cracks.sheetOf(t), carried.sheetOf(k++));
     }
-    return newIdOf;
+    return ids;
 }
 
 // What to cut into the level set (state frame). Sheets with voxel-resolution markers: the
@@ -294,21 +317,17 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
         s.frontTally = FrontAdvanceResult();
         out = s.fronts->takeSwept();
     }
+    const std::map<int, int> counts = sheetTriangleCounts(cracks);
+    for (const auto& [sheet, count] : counts) {
+        if (marked(sheet)) continue;
+        TriangleMesh uncut = uncutTriangles(s, cracks, sheet, offset);
+        if (!uncut.triangles.empty()) out[sheet] = std::move(uncut);
+    }
+    s.cutTriangles = counts;
     auto vertex = [&](TriangleMesh& m, const Eigen::Vector3d& p) {
         m.vertices.push_back(p + offset);
         return static_cast<int>(m.vertices.size()) - 1;
     };
-    std::map<int, int> seen;
-    for (int t = 0; t < cracks.triangleCount(); ++t) {
-        const int sheet = cracks.sheetOf(t);
-        const int index = seen[sheet]++;
-        if (marked(sheet) || index < s.cutTriangles[sheet]) continue;
-        TriangleMesh& m = out[sheet];
-        const auto& tri = cracks.triangle(t);
-        m.triangles.push_back(
-            {vertex(m, cracks.node(tri[0])), vertex(m, cracks.node(tri[1])), vertex(m, cracks.node(tri[2]))});
-    }
-    for (const auto& [sheet, count] : seen) s.cutTriangles[sheet] = count;
     const auto frames = displacementCorrelation(cracks, Eigen::VectorXd::Zero(3 * cracks.nodeCount()),
                                                 s.fracture->solver().material());
     std::map<int, Eigen::Vector3d> ahead;
@@ -490,8 +509,18 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
             carried->levelSet = f.levelSet;  // its BEM source is made from it when first needed
             if (!f.incompleteCracks.empty()) {
                 carried->carriedCracks = s.fracture->cracks().extractSheets(f.incompleteCracks, offset);
-                carried->levelSet->renameCracks(
-                    carriedSheetIds(s.fracture->cracks(), f.incompleteCracks, carried->carriedCracks));
+                const CarriedIds ids =
+                    carriedIds(s.fracture->cracks(), f.incompleteCracks, carried->carriedCracks);
+                carried->levelSet->renameCracks(ids.sheet);
+                if (s.fronts) {
+                    // The fragment's state frame is the parent's: the markers go on from where they are.
+                    carried->fronts =
+                        std::make_unique<CrackFronts>(s.fronts->extractSheets(ids.sheet, ids.node));
+                    const int freed = carried->fronts->freeOutside(levelSetFrontQueries(*carried->levelSet));
+                    logf(LogLevel::Info, body.name(), ": fragment ", f.name, " carries ", ids.sheet.size(),
+                         " incomplete cracks and their markers (", freed,
+                         " outside it follow their coarse front)");
+                }
             }
             spec.carriedState = std::move(carried);
         }

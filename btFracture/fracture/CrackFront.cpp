@@ -220,6 +220,30 @@ int CrackFronts::freeOutside(const FrontQueries& queries) {
     return freed;
 }
 
+CrackFronts CrackFronts::extractSheets(const std::map<int, int>& newSheetOf,
+                                       const std::map<int, int>& newNodeOf) const {
+    const auto rename = [](const std::map<int, int>& newIdOf, int id) {
+        const auto it = newIdOf.find(id);
+        return it == newIdOf.end() ? -1 : it->second;
+    };
+    CrackFronts out(spacing_);
+    for (const auto& [sheet, chains] : sheets_) {
+        const int to = rename(newSheetOf, sheet);
+        if (to < 0) continue;
+        std::vector<MarkerChain>& copy = out.sheets_[to] = chains;
+        for (MarkerChain& chain : copy)
+            for (FrontMarker& m : chain.markers) {
+                m.coarseNode = rename(newNodeOf, m.coarseNode);
+                m.home = rename(newSheetOf, m.home);
+            }
+        const auto moved = movedCoarseNodes_.find(sheet);
+        if (moved == movedCoarseNodes_.end()) continue;
+        for (const int node : moved->second)
+            if (const int n = rename(newNodeOf, node); n >= 0) out.movedCoarseNodes_[to].insert(n);
+    }
+    return out;
+}
+
 std::map<int, TriangleMesh> CrackFronts::takeSwept() {
     std::map<int, TriangleMesh> out;
     out.swap(swept_);

@@ -115,6 +115,13 @@ public:
     // markers made outside. Returns how many were freed.
     int freeOutside(const FrontQueries& queries);
 
+    // The fronts of the sheets in `newSheetOf` for a fragment that carries them as incomplete
+    // cracks (§5.3: the sheets and their front data are copied): markers keep their state, sheet
+    // ids (also the markers' home crack) become newSheetOf[old] and coarse node ids
+    // newNodeOf[old] (-1 where missing). Swept triangles are not copied: they are cut already.
+    CrackFronts extractSheets(const std::map<int, int>& newSheetOf,
+                              const std::map<int, int>& newNodeOf) const;
+
     // Triangles swept since the last call, per sheet (triangle soups), and forgets them.
     std::map<int, TriangleMesh> takeSwept();
     int sweptTriangles() const;

@@ -469,6 +469,79 @@ TEST(CrackFront, MarkersOutsideAKeptFragmentFollowTheCoarseFront) {
     EXPECT_NEAR(reachStopped, 8.0 * voxel, 0.5 * voxel);  // stopped where the body left them
 }
 
+// §5.3: a fragment carrying an incomplete crack takes over its parent's markers. Two sheets grow
+// in a sphere until part of one front has stopped at the surface; sheet 7 is extracted under new
+// sheet (7 -> 0) and coarse node ids (k -> 100 + k). Given the renamed coarse front, the copy
+// goes on exactly as the parent's markers do: bit-identical markers and swept surfaces, the same
+// coarse nodes reported stopped (renamed), nothing of sheet 3 and nothing swept before the copy.
+TEST(CrackFront, CarriedFrontsGoOnAsTheParentsWould) {
+    const double voxel = 1e-3, R = 20.0 * voxel;
+    const Eigen::Vector3d centre(0.001, -0.002, 0.003);
+    const FrontQueries sphere{[=](const Eigen::Vector3d& p) { return (p - centre).norm() < R; },
+                              [](const Eigen::Vector3d&) { return -1; },
+                              {}};
+    const Eigen::Vector3d u = Eigen::Vector3d(1, 0, 0.3).normalized(), v = Eigen::Vector3d(0, 1, 0);
+    const auto step = [&](double) { return 1.5 * voxel; };
+    CoarseFront other =
+        circleFront(centre - 6.0 * voxel * u, v, Eigen::Vector3d::UnitZ(), 2.0 * voxel, 8, step, 50);
+    CoarseFront parent = circleFront(centre + 9.0 * voxel * v, u, v, 3.0 * voxel, 12, step);
+    CrackFronts fronts(voxel);
+    fronts.addSheet(3, other, sphere);
+    fronts.addSheet(7, parent, sphere);
+    std::set<int> stopped;
+    const auto grow = [&](CrackFronts& f, CoarseFront& coarse, int sheet, std::set<int>& stoppedNodes) {
+        const FrontAdvanceResult r = f.advance({{sheet, coarse}}, sphere);
+        stoppedNodes.insert(r.arrestedCoarseNodes.begin(), r.arrestedCoarseNodes.end());
+        for (const int node : stoppedNodes) coarse.advance[node].setZero();
+        moveCoarse(coarse);
+    };
+    for (int k = 0; k < 6; ++k) {
+        fronts.advance({{3, other}}, sphere);
+        moveCoarse(other);
+        grow(fronts, parent, 7, stopped);
+    }
+    ASSERT_GT(stopped.size(), 0u);
+    ASSERT_LT(stopped.size(), 12u);
+    std::map<int, int> newNodeOf;
+    CoarseFront renamed;
+    for (const auto& [node, p] : parent.position) {
+        newNodeOf[node] = 100 + node;
+        renamed.position[100 + node] = p;
+        renamed.advance[100 + node] = parent.advance.at(node);
+    }
+    for (const auto& [a, b] : parent.edges) renamed.edges.emplace_back(100 + a, 100 + b);
+    CrackFronts carried = fronts.extractSheets({{7, 0}}, newNodeOf);
+    EXPECT_EQ(carried.sheets(), std::vector<int>{0});
+    EXPECT_EQ(carried.sweptTriangles(), 0);
+    fronts.takeSwept();
+    std::set<int> stoppedCopy;
+    for (const int node : stopped) stoppedCopy.insert(newNodeOf.at(node));
+    const std::size_t stoppedBefore = stopped.size();
+    int steps = 0;
+    for (; steps < 30 && stopped.size() < 12; ++steps) {
+        grow(fronts, parent, 7, stopped);
+        grow(carried, renamed, 0, stoppedCopy);
+    }
+    std::printf("carried front: %zu of 12 coarse nodes stopped before the copy, all after %d more steps\n",
+                stoppedBefore, steps);
+    EXPECT_EQ(stopped.size(), 12u);
+    std::set<int> expected;
+    for (const int node : stopped) expected.insert(newNodeOf.at(node));
+    EXPECT_EQ(stoppedCopy, expected);
+    const auto& a = fronts.chains(7).front().markers;
+    const auto& b = carried.chains(0).front().markers;
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].position, b[i].position) << i;
+        EXPECT_EQ(a[i].arrested, b[i].arrested) << i;
+        EXPECT_EQ(newNodeOf.at(a[i].coarseNode), b[i].coarseNode) << i;
+    }
+    const auto sweptParent = fronts.takeSwept(), sweptCopy = carried.takeSwept();
+    ASSERT_EQ(sweptCopy.count(0), 1u);
+    EXPECT_TRUE(sweptParent.at(7).vertices == sweptCopy.at(0).vertices);
+    EXPECT_EQ(sweptParent.count(3), 0u);
+}
+
 // The same marker run twice gives bit-identical markers and swept surfaces.
 TEST(CrackFront, Deterministic) {
     SpacingRange r1, r2;
