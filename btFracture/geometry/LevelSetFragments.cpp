@@ -41,8 +41,9 @@ using namespace levelset;
 using openvdb::BoolGrid;
 
 // Where a crack voxel looks for the fragment on either side of its sheet [voxels from the sheet]:
-// beyond the slab (1.7 voxels) and, where sheets cross or run close, beyond the neighbour's slab.
-constexpr double kSideProbes[] = {2.0, 3.0, 4.0, 5.0};
+// just past the slab's half-width (0.85 voxel: a chip one voxel thick between two slabs is found
+// there), beyond the slab, and where sheets cross or run close, beyond the neighbour's slab.
+constexpr double kSideProbes[] = {1.0, 2.0, 3.0, 4.0, 5.0};
 
 // A voxel within the narrow band of a crack sheet, with the fragments on either side.
 struct CrackVoxel {
@@ -105,6 +106,27 @@ void labelSurfaceShell(Int32Grid& labels, const LevelSetBody::Impl& body) {
             if (label >= 0) found.emplace_back(ijk, label);
         }
         for (const auto& [ijk, label] : found) labelAcc.setValueOn(ijk, label);
+    }
+}
+
+// Keeps, of phi's interior, only the piece that holds `component`: crack voxels whose side probes
+// reach past another slab can hand phi voxels that do not touch it (islands a voxel or two
+// across, which the fragment's own body, §5.3, would split off as pieces at its next event).
+void dropIslands(FloatGrid& phi, const BoolGrid& component, float background) {
+    std::vector<BoolGrid::Ptr> pieces;
+    serially([&] {
+        BoolGrid::Ptr interior = openvdb::tools::sdfInteriorMask(phi);
+        openvdb::tools::extractActiveVoxelSegmentMasks(*interior, pieces);
+    });
+    if (pieces.size() < 2) return;
+    auto componentAcc = component.getConstAccessor();
+    auto phiAcc = phi.getAccessor();
+    for (const BoolGrid::Ptr& piece : pieces) {
+        bool holdsComponent = false;
+        for (auto it = piece->cbeginValueOn(); it && !holdsComponent; ++it)
+            holdsComponent = componentAcc.isValueOn(it.getCoord());
+        if (holdsComponent) continue;
+        for (auto it = piece->cbeginValueOn(); it; ++it) phiAcc.setValueOff(it.getCoord(), background);
     }
 }
 
@@ -234,6 +256,9 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
         std::vector<int> filled;
         for (int i : crackVoxelsOf[k]) {
             const CrackVoxel& v = crackVoxels[i];
+            // A voxel of another fragment stays its own, although probes past it find this one on
+            // both sides (a chip between the sheet and this fragment).
+            if (const int own = labelAcc.getValue(v.ijk); own >= 0 && own != k) continue;
             const float solid = solidAcc.getValue(v.ijk);
             if (v.plus == k && v.minus == k) {
                 assign(v.ijk, solid);
@@ -248,6 +273,7 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
                 assign(v.ijk, std::max(solid, static_cast<float>(side)));
             }
         }
+        dropIslands(*phi, *components[k].mask, background);
         serially([&] { openvdb::tools::pruneLevelSet(phi->tree()); });
 
         Fragment f;
@@ -311,6 +337,9 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
         }
         child->mass = f.mass;
         child->rebuildObject();
+        // Carving its incomplete cracks back in can leave single voxels on the sheet where the
+        // crack turns from separating to incomplete (phi there is -0.01 voxel): islands too.
+        dropIslands(*child->object, *components[k].mask, background);
         f.visualMesh = incomplete.empty() ? surface : meshFromGrid(*child->object, f.name + " (visual)");
         if (f.visualMesh.name == f.name) f.visualMesh.name = f.name + " (visual)";
         if (f.volumeClass == FragmentClass::Breakable || f.volumeClass == FragmentClass::KeepsParentSolver) {

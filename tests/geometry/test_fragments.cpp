@@ -242,6 +242,33 @@ TEST(Fragments, CutStoppedHalfwayLeavesOneFragmentWithAnIncompleteCrack) {
     }
 }
 
+// Each voxel's material counts for one fragment only. Two parallel cuts 2.2 voxels apart leave a
+// chip one voxel layer thick between their slabs; the side probes of the first sheet's crack
+// voxels (2-5 voxels out) reach past the chip into the piece beyond, which used to claim the
+// chip's voxels too: the pieces then summed to more than the box, and that piece's own level set
+// (its body when it breaks again, §5.3) held the chip as a second piece. (In `make demo` such
+// islands split off as up to 26 specks at a piece's next event.)
+TEST(Fragments, AChipBetweenCloseCutsIsClaimedByNoOtherPiece) {
+    LevelSetBody box = makeBox();
+    const double x0 = 32.0 * kVoxel, x1 = 34.2 * kVoxel;
+    box.cutAlongSurface(test::sheet({x0, 0.03, 0.025}, {0, 0.04, 0}, {0, 0, 0.035}, "first plane"), 1);
+    box.cutAlongSurface(test::sheet({x1, 0.03, 0.025}, {0, 0.04, 0}, {0, 0, 0.035}, "second plane"), 2);
+    const auto pieces = box.fragments(FragmentSettings());
+    double sum = 0.0;
+    for (const Fragment& f : pieces) sum += f.mass.volume;
+    std::printf("%zu pieces, volumes sum to %+.3f %% of the box\n", pieces.size(),
+                100.0 * (sum / box.massProperties().volume - 1.0));
+    ASSERT_EQ(pieces.size(), 3u);
+    EXPECT_NEAR(sum / box.massProperties().volume, 1.0, 0.005);
+    for (const Fragment& f : pieces) {
+        if (!f.levelSet) continue;
+        const auto own = f.levelSet->fragments(FragmentSettings());
+        std::printf("%s: %.2f %% of the box, its own level set in %zu piece(s)\n", f.name.c_str(),
+                    100.0 * f.fractionOfOriginal, own.size());
+        EXPECT_EQ(own.size(), 1u) << f.name;
+    }
+}
+
 // Three corner cuts and a plane give pieces in every class of §5.2.
 TEST(Fragments, VolumeClassesOnConstructedCase) {
     const double side = 0.1;
