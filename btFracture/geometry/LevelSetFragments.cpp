@@ -109,15 +109,21 @@ void labelSurfaceShell(Int32Grid& labels, const LevelSetBody::Impl& body) {
     }
 }
 
-// Keeps, of phi's interior, only the piece that holds `component`: crack voxels whose side probes
-// reach past another slab can hand phi voxels that do not touch it (islands a voxel or two
-// across, which the fragment's own body, §5.3, would split off as pieces at its next event).
-void dropIslands(FloatGrid& phi, const BoolGrid& component, float background) {
+// The connected pieces of phi's interior (6-connected voxels with phi < 0), one mask each.
+std::vector<BoolGrid::Ptr> interiorPieces(const FloatGrid& phi) {
     std::vector<BoolGrid::Ptr> pieces;
     serially([&] {
         BoolGrid::Ptr interior = openvdb::tools::sdfInteriorMask(phi);
         openvdb::tools::extractActiveVoxelSegmentMasks(*interior, pieces);
     });
+    return pieces;
+}
+
+// Keeps, of phi's interior, only the piece that holds `component`: crack voxels whose side probes
+// reach past another slab can hand phi voxels that do not touch it (islands a voxel or two
+// across, which the fragment's own body, §5.3, would split off as pieces at its next event).
+void dropIslands(FloatGrid& phi, const BoolGrid& component, float background) {
+    const std::vector<BoolGrid::Ptr> pieces = interiorPieces(phi);
     if (pieces.size() < 2) return;
     auto componentAcc = component.getConstAccessor();
     auto phiAcc = phi.getAccessor();
@@ -140,11 +146,7 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
 
     // 1. Connected components of the object's interior (6-connected voxels), in a
     //    deterministic order: most voxels first, then lowest first voxel.
-    std::vector<BoolGrid::Ptr> masks;
-    serially([&] {
-        BoolGrid::Ptr interior = openvdb::tools::sdfInteriorMask(*body.object);
-        openvdb::tools::extractActiveVoxelSegmentMasks(*interior, masks);
-    });
+    std::vector<BoolGrid::Ptr> masks = interiorPieces(*body.object);
     std::vector<Component> components;
     for (auto& mask : masks) {
         Component c;
@@ -339,7 +341,8 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
         child->rebuildObject();
         // Carving its incomplete cracks back in can leave single voxels on the sheet where the
         // crack turns from separating to incomplete (phi there is -0.01 voxel): islands too.
-        dropIslands(*child->object, *components[k].mask, background);
+        // Without incomplete cracks the object is phi, which has none left.
+        if (!incomplete.empty()) dropIslands(*child->object, *components[k].mask, background);
         f.visualMesh = incomplete.empty() ? surface : meshFromGrid(*child->object, f.name + " (visual)");
         if (f.visualMesh.name == f.name) f.visualMesh.name = f.name + " (visual)";
         if (f.volumeClass == FragmentClass::Breakable || f.volumeClass == FragmentClass::KeepsParentSolver) {
