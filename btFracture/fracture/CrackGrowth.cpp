@@ -1,10 +1,12 @@
 #include <btFracture/fracture/CrackGrowth.h>
 
+#include <btFracture/core/ClosestPoint.h>
 #include <btFracture/core/Intersection.h>
 #include <btFracture/fracture/SurfaceSlide.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace btfracture {
 namespace {
@@ -46,16 +48,44 @@ Eigen::Vector3d frontTangent(const CrackMesh& cracks, const std::map<int, std::p
     return t.norm() > 0.0 ? Eigen::Vector3d(t.normalized()) : Eigen::Vector3d::Zero();
 }
 
+bool insideBody(const SurfaceMesh& body, const Eigen::Vector3d& p) {
+    return windingNumber(body.nodes(), body.triangles(), p) > 0.5;
+}
+
+// p moved to `inset` [m] inside its nearest point on the body's surface (along the inward normal
+// of the triangle holding that point).
+Eigen::Vector3d pulledInside(const SurfaceMesh& body, const Eigen::Vector3d& p, double inset) {
+    int nearest = 0;
+    Eigen::Vector3d point = p;
+    double best = std::numeric_limits<double>::infinity();
+    for (int t = 0; t < body.triangleCount(); ++t) {
+        const auto& tri = body.triangle(t);
+        const Eigen::Vector3d c =
+            closestPointOnTriangle(p, body.node(tri[0]), body.node(tri[1]), body.node(tri[2]));
+        if ((c - p).squaredNorm() < best) best = (c - p).squaredNorm(), nearest = t, point = c;
+    }
+    return point - inset * body.normal(nearest);
+}
+
 // Adds triangle (apex, from, to), whose edge from -> to becomes front, split at its midpoint
-// when longer than maxEdge (the apex stays the same, so the orientation is kept).
-int addFrontTriangle(CrackMesh& cracks, int apex, int from, int to, double maxEdge,
+// when longer than maxEdge (the apex stays the same, so the orientation is kept). A midpoint
+// outside the body (nodes sliding on a slightly wavy face, or an edge across a concave part)
+// moves to just inside the surface, or is arrested if that fails: outside, a front would grow
+// on unchecked.
+int addFrontTriangle(CrackMesh& cracks, int apex, int from, int to, double maxEdge, const SurfaceMesh& body,
                      std::vector<char>& arrested) {
     if ((cracks.node(to) - cracks.node(from)).norm() <= maxEdge) {
         cracks.addTriangle(apex, from, to);
         return 1;
     }
-    const int mid = cracks.addNode(0.5 * (cracks.node(from) + cracks.node(to)));
-    arrested.push_back(0);
+    Eigen::Vector3d middle = 0.5 * (cracks.node(from) + cracks.node(to));
+    bool inside = insideBody(body, middle);
+    if (!inside) {
+        middle = pulledInside(body, middle, 0.05 * maxEdge);
+        inside = insideBody(body, middle);
+    }
+    const int mid = cracks.addNode(middle);
+    arrested.push_back(inside ? 0 : 1);
     cracks.addTriangle(apex, from, mid);
     cracks.addTriangle(apex, mid, to);
     return 2;
@@ -99,7 +129,9 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
                 stops = again.crack;
             }
         }
-        if ((target - p).norm() < 0.05 * maxEdge) {  // no room left
+        // No room left, or the node is (a carried crack reaching past a fragment's surface) or
+        // ends outside the body: outside, a front would grow on unchecked.
+        if ((target - p).norm() < 0.05 * maxEdge || !insideBody(body, target)) {
             arrested[node] = 1;
             ++result.arrestedNodes;
             continue;
@@ -121,11 +153,11 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
         if (movesA && movesB) {
             cracks.addTriangle(e.b, e.a, ia->second);
             result.newTriangles +=
-                1 + addFrontTriangle(cracks, e.b, ia->second, ib->second, maxEdge, arrested);
+                1 + addFrontTriangle(cracks, e.b, ia->second, ib->second, maxEdge, body, arrested);
         } else if (movesA) {  // new front a' -> b
-            result.newTriangles += addFrontTriangle(cracks, e.a, ia->second, e.b, maxEdge, arrested);
+            result.newTriangles += addFrontTriangle(cracks, e.a, ia->second, e.b, maxEdge, body, arrested);
         } else if (movesB) {  // new front a -> b'
-            result.newTriangles += addFrontTriangle(cracks, e.b, e.a, ib->second, maxEdge, arrested);
+            result.newTriangles += addFrontTriangle(cracks, e.b, e.a, ib->second, maxEdge, body, arrested);
         }
     }
     return result;

@@ -2,7 +2,8 @@
 // Advancing crack fronts on the BEM crack mesh itself (the coarse sheet; with voxel-resolution
 // markers, FractureSolver first shortens the step of a node whose markers all stopped to end
 // level with them): every moving front node gets a new node ahead of it, every front edge a
-// strip of new triangles, and over-long new front edges are split. A front node that
+// strip of new triangles, and over-long new front edges are split (a midpoint outside the body
+// moves to just inside it; a front node outside it never moves). A front node that
 // would cross another crack stops there and is arrested for good; one that would leave the body
 // stops just inside it and slides along the surface as far as its crack plane allows (the ends of
 // a through crack run along the faces), and is arrested when no slide is left.
