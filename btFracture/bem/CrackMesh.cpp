@@ -41,10 +41,6 @@ Eigen::Vector3d CrackMesh::normal(int t) const {
     return (nodes_[tri[1]] - nodes_[tri[0]]).cross(nodes_[tri[2]] - nodes_[tri[0]]).normalized();
 }
 
-double CrackMesh::sheetArea(int t) const {
-    return sheetAreas_[sheetOfTriangle_[t]];
-}
-
 CrackMesh CrackMesh::extractSheets(const std::vector<int>& sheets, const Eigen::Vector3d& shift) const {
     CrackMesh out;
     std::vector<int> newIndex(nodes_.size(), -1);
@@ -108,16 +104,14 @@ std::vector<int> CrackMesh::refreshUnknowns() {
             sheets.unite(uses[0].first, uses[1].first);
         }
     }
-    // Sheets (edge-connected components) and their areas.
+    // Sheets (edge-connected components).
     sheetOfTriangle_.assign(triangles_.size(), -1);
     std::map<int, int> sheetOfRoot;
-    sheetAreas_.clear();
     for (int t = 0; t < triangleCount(); ++t) {
-        auto [it, inserted] = sheetOfRoot.emplace(sheets.find(t), static_cast<int>(sheetAreas_.size()));
-        if (inserted) sheetAreas_.push_back(0.0);
+        const auto it = sheetOfRoot.emplace(sheets.find(t), static_cast<int>(sheetOfRoot.size())).first;
         sheetOfTriangle_[t] = it->second;
-        sheetAreas_[it->second] += area(t);
     }
+    sheetCount_ = static_cast<int>(sheetOfRoot.size());
     std::vector<int> activated;
     for (int i = 0; i < nodeCount(); ++i) {
         if (onFront[i] && unknown_[i] >= 0)

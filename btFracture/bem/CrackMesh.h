@@ -40,12 +40,10 @@ public:
         int a, b, triangle;
     };
     const std::vector<FrontEdge>& frontEdges() const { return frontEdges_; }
-    // Total area [m^2] of the sheet containing triangle t (the EST's crack area A, §4.2).
-    double sheetArea(int t) const;
     // Sheets are the edge-connected components, numbered by their lowest triangle (as of the last
     // refreshUnknowns()).
     int sheetOf(int t) const { return sheetOfTriangle_[t]; }
-    int sheetCount() const { return static_cast<int>(sheetAreas_.size()); }
+    int sheetCount() const { return sheetCount_; }
     // A new crack mesh with just the given sheets, every node moved by `shift` [m] (carrying
     // incomplete cracks into a fragment's own frame, §5.3). No unknowns are numbered yet.
     CrackMesh extractSheets(const std::vector<int>& sheets, const Eigen::Vector3d& shift) const;
@@ -64,8 +62,8 @@ private:
     std::vector<int> nodeOfUnknown_;
     std::vector<FrontEdge> frontEdges_;
     std::vector<int> sheetOfTriangle_;
-    std::vector<double> sheetAreas_;
     int unknownCount_ = 0;
+    int sheetCount_ = 0;
 };
 
 }  // namespace btfracture

@@ -2,6 +2,7 @@
 
 #include <btFracture/bem/InteriorStress.h>
 #include <btFracture/bem/SurfaceStress.h>
+#include <btFracture/core/Intersection.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/fracture/CrackGrowth.h>
@@ -29,6 +30,7 @@ FractureSolver::~FractureSolver() = default;
 
 void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
     cracks_.refreshUnknowns();  // cracks may have been added from outside (pre-cracks, carried cracks)
+    triangleInBody_.clear();
     arrested_.resize(cracks_.nodeCount(), 0);
     tractions_ = q;
     load_ = solver_.operators().tractionToLoad * q;
@@ -97,11 +99,12 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
     std::vector<FrontSifs> out;
     out.reserve(frames.size());
     gainLimited_ = 0;
+    const std::vector<double> sheetAreas = sheetAreasInBody();
     for (const FrontSifs& f : frames) {
         if (skip(f)) continue;
         double area = 0.0;
         if (!cracks_.trianglesAtNode(f.node).empty())
-            area = cracks_.sheetArea(cracks_.trianglesAtNode(f.node)[0]);
+            area = sheetAreas[cracks_.sheetOf(cracks_.trianglesAtNode(f.node)[0])];
         FrontSifs e = estimateSifs(f.frame, stress.stressAt(f.position), area, m.compressiveFactor(),
                                    settings_.estimatorGeometryFactor);
         if (limit > 0.0) {  // the §4.3 update raises K_eff at most `limit` times (FractureSettings)
@@ -121,6 +124,23 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
         out.push_back(e);
     }
     return out;
+}
+
+// §4.2's crack area A per sheet, counting only the triangles inside the body: a sheet a fragment
+// carries (§5.3) is its parent's whole sheet, and the part past the fragment's surface is no
+// crack of this body. Triangles never move within an event, so each is tested once.
+std::vector<double> FractureSolver::sheetAreasInBody() {
+    const SurfaceMesh& body = solver_.mesh();
+    for (int t = static_cast<int>(triangleInBody_.size()); t < cracks_.triangleCount(); ++t) {
+        const auto& tri = cracks_.triangle(t);
+        const Eigen::Vector3d centroid =
+            (cracks_.node(tri[0]) + cracks_.node(tri[1]) + cracks_.node(tri[2])) / 3.0;
+        triangleInBody_.push_back(windingNumber(body.nodes(), body.triangles(), centroid) > 0.5);
+    }
+    std::vector<double> areas(cracks_.sheetCount(), 0.0);
+    for (int t = 0; t < cracks_.triangleCount(); ++t)
+        if (triangleInBody_[t]) areas[cracks_.sheetOf(t)] += cracks_.area(t);
+    return areas;
 }
 
 FractureStepRecord FractureSolver::step(int index) {

@@ -91,6 +91,7 @@ private:
     void switchToEstimator();
     void recordLeavingOpenings(const std::vector<int>& fresh, const Eigen::VectorXd& cod);
     int meshElements() const { return solver_.mesh().triangleCount() + cracks_.triangleCount(); }
+    std::vector<double> sheetAreasInBody();
 
     const ElasticSolver& solver_;
     MaterialField field_;
@@ -106,6 +107,7 @@ private:
     Eigen::VectorXd estimatedOpenings_;  // EST: per crack node, 3 each
     Eigen::VectorXd solvedOpenings_;     // FULL: per crack node, 3 each
     std::vector<char> arrested_;         // per crack node
+    std::vector<char> triangleInBody_;   // per crack triangle, this event: its centroid is inside
     std::vector<char> seeded_;           // per surface triangle
     GrowthObserver observer_;
 };
