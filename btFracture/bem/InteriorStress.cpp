@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace btfracture {
 namespace {
@@ -89,18 +88,6 @@ void StressEvaluator::addCracks(const CrackMesh& cracks, const Eigen::VectorXd& 
     openings_ = &nodalOpenings;
 }
 
-StressEvaluator::Nearest StressEvaluator::nearestTriangle(const Eigen::Vector3d& x) const {
-    Nearest best{-1, std::numeric_limits<double>::infinity(), x};
-    for (int t = 0; t < mesh_.triangleCount(); ++t) {
-        const auto& tri = mesh_.triangle(t);
-        const Eigen::Vector3d c =
-            closestPointOnTriangle(x, mesh_.node(tri[0]), mesh_.node(tri[1]), mesh_.node(tri[2]));
-        const double d = (c - x).norm();
-        if (d < best.distance) best = {t, d, c};
-    }
-    return best;
-}
-
 Eigen::Matrix3d StressEvaluator::interiorStress(const Eigen::Vector3d& x) const {
     Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
     for (int t = 0; t < mesh_.triangleCount(); ++t) {
@@ -126,11 +113,11 @@ Eigen::Matrix3d StressEvaluator::interiorStress(const Eigen::Vector3d& x) const 
 }
 
 Eigen::Matrix3d StressEvaluator::nearestSurfaceStress(const Eigen::Vector3d& x) const {
-    return surface_[nearestTriangle(x).triangle];
+    return surface_[mesh_.nearest(x).triangle];
 }
 
 Eigen::Matrix3d StressEvaluator::stressAt(const Eigen::Vector3d& x) const {
-    const Nearest near = nearestTriangle(x);
+    const SurfaceMesh::Nearest near = mesh_.nearest(x);
     const double h = mesh_.diameter(near.triangle);
     const double s =
         (near.distance / h - settings_.nearFraction) / (settings_.farFraction - settings_.nearFraction);

@@ -43,13 +43,6 @@ public:
     // Eq. 5 on the triangle nearest to x.
     Eigen::Matrix3d nearestSurfaceStress(const Eigen::Vector3d& x) const;
 
-    struct Nearest {
-        int triangle;
-        double distance;
-        Eigen::Vector3d point;
-    };
-    Nearest nearestTriangle(const Eigen::Vector3d& x) const;
-
 private:
     const SurfaceMesh& mesh_;
     double E_, nu_;

@@ -1,11 +1,14 @@
 #include <btFracture/bem/SurfaceMesh.h>
 
+#include <btFracture/core/ClosestPoint.h>
+#include <btFracture/core/Intersection.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 
 namespace btfracture {
@@ -73,6 +76,21 @@ SurfaceMesh::SurfaceMesh(TriangleMesh mesh) {
                 }
             }
         }
+}
+
+bool SurfaceMesh::encloses(const Eigen::Vector3d& p) const {
+    return windingNumber(nodes_, triangles_, p) > 0.5;
+}
+
+SurfaceMesh::Nearest SurfaceMesh::nearest(const Eigen::Vector3d& p) const {
+    Nearest best{-1, std::numeric_limits<double>::infinity(), p};
+    for (int t = 0; t < triangleCount(); ++t) {
+        const auto& tri = triangles_[t];
+        const Eigen::Vector3d c = closestPointOnTriangle(p, nodes_[tri[0]], nodes_[tri[1]], nodes_[tri[2]]);
+        const double d = (c - p).norm();
+        if (d < best.distance) best = {t, d, c};
+    }
+    return best;
 }
 
 }  // namespace btfracture

@@ -44,6 +44,17 @@ public:
     // Radius of the smallest origin-centred ball holding the mesh; the natural length scale.
     double radius() const { return radius_; }
 
+    // Whether p lies inside the solid (generalised winding number above 1/2).
+    bool encloses(const Eigen::Vector3d& p) const;
+    // The surface point nearest to p, brute force over the triangles (the lowest index among
+    // equally near ones).
+    struct Nearest {
+        int triangle;
+        double distance;  // [m]
+        Eigen::Vector3d point;
+    };
+    Nearest nearest(const Eigen::Vector3d& p) const;
+
 private:
     std::vector<Eigen::Vector3d> nodes_;
     std::vector<std::array<int, 3>> triangles_;

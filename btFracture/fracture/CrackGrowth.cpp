@@ -1,12 +1,10 @@
 #include <btFracture/fracture/CrackGrowth.h>
 
-#include <btFracture/core/ClosestPoint.h>
 #include <btFracture/core/Intersection.h>
 #include <btFracture/fracture/SurfaceSlide.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace btfracture {
 namespace {
@@ -48,25 +46,6 @@ Eigen::Vector3d frontTangent(const CrackMesh& cracks, const std::map<int, std::p
     return t.norm() > 0.0 ? Eigen::Vector3d(t.normalized()) : Eigen::Vector3d::Zero();
 }
 
-bool insideBody(const SurfaceMesh& body, const Eigen::Vector3d& p) {
-    return windingNumber(body.nodes(), body.triangles(), p) > 0.5;
-}
-
-// p moved to `inset` [m] inside its nearest point on the body's surface (along the inward normal
-// of the triangle holding that point).
-Eigen::Vector3d pulledInside(const SurfaceMesh& body, const Eigen::Vector3d& p, double inset) {
-    int nearest = 0;
-    Eigen::Vector3d point = p;
-    double best = std::numeric_limits<double>::infinity();
-    for (int t = 0; t < body.triangleCount(); ++t) {
-        const auto& tri = body.triangle(t);
-        const Eigen::Vector3d c =
-            closestPointOnTriangle(p, body.node(tri[0]), body.node(tri[1]), body.node(tri[2]));
-        if ((c - p).squaredNorm() < best) best = (c - p).squaredNorm(), nearest = t, point = c;
-    }
-    return point - inset * body.normal(nearest);
-}
-
 // Adds triangle (apex, from, to), whose edge from -> to becomes front, split at its midpoint
 // when longer than maxEdge (the apex stays the same, so the orientation is kept). A midpoint
 // outside the body (nodes sliding on a slightly wavy face, or an edge across a concave part)
@@ -79,10 +58,11 @@ int addFrontTriangle(CrackMesh& cracks, int apex, int from, int to, double maxEd
         return 1;
     }
     Eigen::Vector3d middle = 0.5 * (cracks.node(from) + cracks.node(to));
-    bool inside = insideBody(body, middle);
-    if (!inside) {
-        middle = pulledInside(body, middle, 0.05 * maxEdge);
-        inside = insideBody(body, middle);
+    bool inside = body.encloses(middle);
+    if (!inside) {  // to 0.05 maxEdge inside the nearest surface point, along that face's normal
+        const SurfaceMesh::Nearest near = body.nearest(middle);
+        middle = near.point - 0.05 * maxEdge * body.normal(near.triangle);
+        inside = body.encloses(middle);
     }
     const int mid = cracks.addNode(middle);
     arrested.push_back(inside ? 0 : 1);
@@ -131,7 +111,7 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
         }
         // No room left, or the node is (a carried crack reaching past a fragment's surface) or
         // ends outside the body: outside, a front would grow on unchecked.
-        if ((target - p).norm() < 0.05 * maxEdge || !insideBody(body, target)) {
+        if ((target - p).norm() < 0.05 * maxEdge || !body.encloses(target)) {
             arrested[node] = 1;
             ++result.arrestedNodes;
             continue;

@@ -2,7 +2,6 @@
 
 #include <btFracture/bem/InteriorStress.h>
 #include <btFracture/bem/SurfaceStress.h>
-#include <btFracture/core/Intersection.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/fracture/CrackGrowth.h>
@@ -135,7 +134,7 @@ std::vector<double> FractureSolver::sheetAreasInBody() {
         const auto& tri = cracks_.triangle(t);
         const Eigen::Vector3d centroid =
             (cracks_.node(tri[0]) + cracks_.node(tri[1]) + cracks_.node(tri[2])) / 3.0;
-        triangleInBody_.push_back(windingNumber(body.nodes(), body.triangles(), centroid) > 0.5);
+        triangleInBody_.push_back(body.encloses(centroid));
     }
     std::vector<double> areas(cracks_.sheetCount(), 0.0);
     for (int t = 0; t < cracks_.triangleCount(); ++t)

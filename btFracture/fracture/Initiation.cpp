@@ -1,6 +1,5 @@
 #include <btFracture/fracture/Initiation.h>
 
-#include <btFracture/core/Intersection.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/fracture/CrackSeed.h>
 
@@ -83,7 +82,7 @@ int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<See
             addDiscCrack(trial, x + (1.05 * r) * inward, c.crackNormal, r, 1, rotation);
             inside = true;
             for (int i = cracks.nodeCount(); i < trial.nodeCount() && inside; ++i)
-                inside = windingNumber(mesh.nodes(), mesh.triangles(), trial.node(i)) > 0.5;
+                inside = mesh.encloses(trial.node(i));
             if (inside && halving > 0)
                 logf(LogLevel::Debug, "initiation: triangle ", c.triangle, " seeded at 1/", 1 << halving,
                      " of the seed radius (a full seed would leave the body)");

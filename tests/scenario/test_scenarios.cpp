@@ -18,6 +18,7 @@
 #include <btFracture/io/SceneWorld.h>
 
 #include "../support/FractureEventAccounting.h"
+#include "../support/GroundCheck.h"
 
 #include <gtest/gtest.h>
 
@@ -81,10 +82,8 @@ Outcome runScenario(const Expect& expect) {
     Outcome out;
     const bool ground = !scene.bodies.empty() && scene.bodies[0].shape.type == SceneShapeType::Plane;
     // Tunnelling, as in tests/stability: a centre of mass deeper in the ground than the largest
-    // body's largest half extent is passing through it. Shallower, a body may dip into it during
-    // the run - a light chip spawned where its parent penetrated, or pressed in by a heavy piece
-    // (bowl_drop at stop 21: a 17 mm^3 speck 6.2 cm deep for 4 steps, then back up) - but at the
-    // end none may lie wholly below the ground (the top of its bounding box 1 mm under it).
+    // body's largest half extent is passing through it; shallower it may dip in (bowl_drop at stop
+    // 21: a 17 mm^3 speck 6.2 cm deep for 4 steps, then back up), and at the end support/GroundCheck.h.
     double depthLimit = 0.0;  // [m]
     for (const auto& body : world.bodies()) {
         if (body.plane) continue;
@@ -113,12 +112,9 @@ Outcome runScenario(const Expect& expect) {
     }
     for (const auto& body : world.bodies()) {
         if (!ground || body.plane) continue;
-        btVector3 lo, hi;
-        body.rigidBody->getAabb(lo, hi);
-        if (double(hi.y()) < -0.001) {
+        if (const std::string below = test::whollyBelowGround(*body.rigidBody); !below.empty()) {
             out.inside = false;
-            out.problem = body.name + " lies wholly below the ground at the end: bounding box y " +
-                          std::to_string(lo.y()) + " .. " + std::to_string(hi.y()) + " m";
+            out.problem = body.name + below;
         }
     }
     out.events = probe.events;

@@ -20,6 +20,7 @@
 
 #include "../geometry/TestShapes.h"
 #include "../support/FractureEventAccounting.h"
+#include "../support/GroundCheck.h"
 
 #include <algorithm>
 #include <cmath>
@@ -246,7 +247,6 @@ Outcome simulate(const Case& c) {
     // plane by a heavy piece may stay partly in it (the chain's 0.5 g chip under the 19 kg slab, COM 1.4 cm
     // deep, top 1 cm above the plane: a mass ratio of 4e4 is beyond what the sequential-impulse solver
     // resolves in its 10 iterations).
-    const double groundSlop = 0.001;  // [m]
     for (int s = 0; s < c.steps && out.finite; ++s) {
         w.world->stepSimulation(btScalar(c.step), 1, btScalar(c.step));
         for (int i = 0; i < w.world->getNumCollisionObjects(); ++i) {
@@ -291,16 +291,10 @@ Outcome simulate(const Case& c) {
     for (int i = 0; i < w.world->getNumCollisionObjects(); ++i) {
         const btRigidBody* b = btRigidBody::upcast(w.world->getCollisionObjectArray()[i]);
         if (!b || b->getInvMass() == 0) continue;
-        btVector3 lo, hi;
-        b->getAabb(lo, hi);
-        if (double(hi.y()) < -groundSlop) {
+        if (const std::string below = test::whollyBelowGround(*b); !below.empty()) {
             out.inside = false;
             const auto* f = dynamic_cast<const btFractureRigidBody*>(b);
-            out.problem = (f ? f->name() : std::string("a projectile")) +
-                          " lies wholly below the ground at the end: bounding box y " +
-                          std::to_string(lo.y()) + " .. " + std::to_string(hi.y()) +
-                          " m, v_y = " + std::to_string(b->getLinearVelocity().y()) + " m/s, mass " +
-                          std::to_string(1.0 / b->getInvMass()) + " kg";
+            out.problem = (f ? f->name() : std::string("a projectile")) + below;
         }
     }
     out.deepest = chaser.deepest;
