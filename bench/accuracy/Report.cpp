@@ -56,17 +56,18 @@ void writeRunsCsv(const std::string& path, const std::vector<RunResult>& runs) {
     std::ofstream out = open(path);
     out << "case,method,hybrid_threshold,bem_triangles,crack_triangles,steps,bem_setup_s,fracture_s,geometry_"
            "s,"
-           "other_engine_s,engine_total_s,rigid_body_s,peak_rss_mb,sif_error,surface_mean_rel,surface_"
+           "other_engine_s,engine_total_s,first_event_engine_s,events,rigid_body_s,peak_rss_mb,sif_error,"
+           "surface_mean_rel,surface_"
            "hausdorff_rel,"
            "fragments,mott_ks,note\n";
     for (const auto& r : runs) {
         char line[512];
         std::snprintf(line, sizeof line,
-                      "%s,%s,%d,%d,%d,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.1f,%.5f,%.5f,%.5f,%d,%.4f,",
+                      "%s,%s,%d,%d,%d,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%.4f,%.1f,%.5f,%.5f,%.5f,%d,%.4f,",
                       r.caseName.c_str(), r.method.c_str(), r.threshold, r.surfaceTriangles, r.crackTriangles,
                       r.steps, r.bemSeconds, r.fractureSeconds, r.geometrySeconds, r.otherEngineSeconds,
-                      r.engineSeconds(), r.rigidSeconds, r.peakMegabytes, r.sifError, r.surfaceMean,
-                      r.surfaceHausdorff, r.fragments, r.mottKs);
+                      r.engineSeconds(), r.firstEventSeconds, r.events, r.rigidSeconds, r.peakMegabytes,
+                      r.sifError, r.surfaceMean, r.surfaceHausdorff, r.fragments, r.mottKs);
         out << line << '"' << r.note << "\"\n";
     }
 }
@@ -87,7 +88,8 @@ void writeStepsCsv(const std::string& path, const std::vector<RunResult>& runs) 
 
 void writeMarkdownTable(const std::string& path, const std::vector<RunResult>& runs) {
     std::ofstream out = open(path);
-    out << "| case | method | BEM tris | crack tris | steps | fracture s | engine s | rigid s | peak MB | "
+    out << "| case | method | BEM tris | crack tris | steps / events | fracture s | engine s | rigid s | "
+           "peak MB | "
            "SIF err % | "
            "surface mean / Hausdorff % | fragments | Mott KS |\n"
            "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
@@ -98,7 +100,7 @@ void writeMarkdownTable(const std::string& path, const std::vector<RunResult>& r
                                                         : fmt("%.2f", 100 * r.surfaceMean) + " / " +
                                                               fmt("%.1f", 100 * r.surfaceHausdorff);
         out << "| " << r.caseName << " | " << method << " | " << r.surfaceTriangles << " | "
-            << r.crackTriangles << " | " << (isScene(r) ? std::string("-") : std::to_string(r.steps)) << " | "
+            << r.crackTriangles << " | " << std::to_string(isScene(r) ? r.events : r.steps) << " | "
             << fmt("%.3f", r.fractureSeconds) << " | " << (isScene(r) ? fmt("%.2f", r.engineSeconds()) : "-")
             << " | " << (isScene(r) ? fmt("%.2f", r.rigidSeconds) : "-") << " | "
             << fmt("%.0f", r.peakMegabytes) << " | " << orDash(r.sifError, "%.1f", 100.0) << " | " << surface

@@ -30,7 +30,7 @@ std::string serialize(const RunResult& r) {
         << r.surfaceTriangles << ' ' << r.bodySize << ' ' << r.crackTriangles << ' ' << r.steps << ' '
         << r.bemSeconds << ' ' << r.fractureSeconds << ' ' << r.geometrySeconds << ' ' << r.otherEngineSeconds
         << ' ' << r.rigidSeconds << ' ' << r.peakMegabytes << ' ' << r.sifError << ' ' << r.fragments << ' '
-        << r.mottKs << ' ' << noSpaces(r.note) << '\n';
+        << r.mottKs << ' ' << r.events << ' ' << r.firstEventSeconds << ' ' << noSpaces(r.note) << '\n';
     for (const auto& s : r.stepSamples)
         out << "S " << s.elements << ' ' << s.frontLength << ' ' << s.frontNodes << ' ' << s.seconds << ' '
             << (s.estimated ? 1 : 0) << ' ' << s.meanKI << ' ' << s.meanKeff << '\n';
@@ -53,7 +53,8 @@ RunResult deserialize(const std::string& text) {
             std::string name, method, note;
             l >> name >> method >> r.threshold >> r.surfaceTriangles >> r.bodySize >> r.crackTriangles >>
                 r.steps >> r.bemSeconds >> r.fractureSeconds >> r.geometrySeconds >> r.otherEngineSeconds >>
-                r.rigidSeconds >> r.peakMegabytes >> r.sifError >> r.fragments >> r.mottKs >> note;
+                r.rigidSeconds >> r.peakMegabytes >> r.sifError >> r.fragments >> r.mottKs >> r.events >>
+                r.firstEventSeconds >> note;
             r.caseName = restore(name);
             r.method = restore(method);
             r.note = restore(note);

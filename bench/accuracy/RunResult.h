@@ -24,8 +24,10 @@ struct RunResult {
     int threshold = 0;                // HYBRID's element threshold (0: not HYBRID)
     int surfaceTriangles = 0;         // BEM surface mesh (scenes: the target)
     double bodySize = 0.0;            // bounding-box diagonal of the body [m]
-    int crackTriangles = 0;           // at the end
-    int steps = 0;                    // propagation steps
+    int crackTriangles = 0;           // at the end (scenes: of the first event)
+    int steps = 0;                    // propagation steps (solver cases)
+    int events = 0;                   // scenes: engine calls that broke the body or its kept piece
+    double firstEventSeconds = 0.0;   // scenes: engine time of the first event alone [s]
     double bemSeconds = 0.0;          // BEM set-up (scenes: engine's BEM share) [s]
     double fractureSeconds = 0.0;     // SIFs, initiation, propagation [s]
     double geometrySeconds = 0.0;     // level-set cuts and fragments (scenes only) [s]

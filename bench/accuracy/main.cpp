@@ -37,12 +37,14 @@ bool selected(const std::string& filter, const std::string& name) {
 
 void print(const RunResult& r) {
     std::printf(
-        "  %-20s %-8s thr %5d  crack %6d  steps %3d  fracture %8.3f s  engine %8.3f s  rigid %7.3f s  %6.0f "
+        "  %-20s %-8s thr %5d  crack %6d  steps %3d  events %2d  fracture %8.3f s  engine %8.3f s  rigid "
+        "%7.3f s  %6.0f "
         "MB"
         "  sif %6.1f %%  surf %6.2f %%  frag %4d  mott %5.2f  %s\n",
-        r.caseName.c_str(), r.method.c_str(), r.threshold, r.crackTriangles, r.steps, r.fractureSeconds,
-        r.engineSeconds(), r.rigidSeconds, r.peakMegabytes, r.sifError < 0 ? -1.0 : 100 * r.sifError,
-        r.surfaceMean < 0 ? -1.0 : 100 * r.surfaceMean, r.fragments, r.mottKs, r.note.c_str());
+        r.caseName.c_str(), r.method.c_str(), r.threshold, r.crackTriangles, r.steps, r.events,
+        r.fractureSeconds, r.engineSeconds(), r.rigidSeconds, r.peakMegabytes,
+        r.sifError < 0 ? -1.0 : 100 * r.sifError, r.surfaceMean < 0 ? -1.0 : 100 * r.surfaceMean, r.fragments,
+        r.mottKs, r.note.c_str());
     std::fflush(stdout);
 }
 
@@ -82,7 +84,8 @@ std::vector<RunResult> runMethods(const std::string& name, bool grows, int surfa
 int main(int argc, char** argv) {
     std::string outDir = "out/accuracy", filter;
     bool smoke = false;
-    int frames = 60;  // 0.24 s: the ball hits at about frame 15
+    int frames = 60;          // 0.24 s: the ball hits at about frame 15
+    double gainLimit = -1.0;  // --gain-limit: EST's §4.3 update gain limit in the scenes (0: off)
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--smoke"))
             smoke = true;
@@ -92,6 +95,8 @@ int main(int argc, char** argv) {
             frames = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--cases") && i + 1 < argc)
             filter = argv[++i];
+        else if (!std::strcmp(argv[i], "--gain-limit") && i + 1 < argc)
+            gainLimit = std::atof(argv[++i]);
         else if (!std::strcmp(argv[i], "--methods") && i + 1 < argc)
             methodFilter = argv[++i];
         else if (!std::strcmp(argv[i], "--verbose"))  // per-step fracture log (debug level)
@@ -99,7 +104,7 @@ int main(int argc, char** argv) {
         else {
             std::fprintf(stderr,
                          "usage: %s [--out DIR] [--smoke] [--frames N] [--cases a,b,...] [--methods "
-                         "FULL,EST,...] [--verbose]\n",
+                         "FULL,EST,...] [--gain-limit X] [--verbose]\n",
                          argv[0]);
             return 2;
         }
@@ -124,8 +129,9 @@ int main(int argc, char** argv) {
     for (const SceneCaseInfo& c : sceneCases(smoke)) {
         if (!selected(filter, c.name)) continue;
         std::printf("%s\n", c.name.c_str());
-        auto results = runMethods(c.name, c.hybrids, c.bemTriangles,
-                                  [&](const MethodChoice& m) { return runSceneCase(c, m, frames); });
+        auto results = runMethods(c.name, c.hybrids, c.bemTriangles, [&](const MethodChoice& m) {
+            return runSceneCase(c, m, frames, gainLimit);
+        });
         for (const auto& r : results) print(r);
         runs.insert(runs.end(), results.begin(), results.end());
     }
@@ -151,10 +157,22 @@ int main(int argc, char** argv) {
     if (full && est && est->engineSeconds() > 0.0) {
         std::printf(
             "METRIC est_speedup_many_fragments %.3f ratio (FULL %.2f s / EST %.2f s in the engine; "
-            "crack propagation only: %.2f s / %.2f s; fragments %d / %d; goal >= 50)\n",
+            "crack propagation only: %.2f s / %.2f s; events %d / %d; first event alone: %.2f s / %.2f s; "
+            "fragments of the first event %d / %d; goal >= 50)\n",
             full->engineSeconds() / est->engineSeconds(), full->engineSeconds(), est->engineSeconds(),
-            full->fractureSeconds, est->fractureSeconds, full->fragments, est->fragments);
+            full->fractureSeconds, est->fractureSeconds, full->events, est->events, full->firstEventSeconds,
+            est->firstEventSeconds, full->fragments, est->fragments);
     }
+    std::printf("many-fragment bunny, FULL / EST engine time by BEM resolution:");
+    for (int triangles : {750, 1000, 1500, 2000}) {
+        const std::string name = "bunny_weak_" + std::to_string(triangles);
+        const RunResult *f = find(name, "FULL"), *e = find(name, "EST");
+        if (f && e && e->engineSeconds() > 0.0)
+            std::printf("  %d: %.1fx (%.1f / %.1f s, events %d / %d)", triangles,
+                        f->engineSeconds() / e->engineSeconds(), f->engineSeconds(), e->engineSeconds(),
+                        f->events, e->events);
+    }
+    std::printf("\n");
     std::printf("METRIC accuracy_study_wall_s %.1f s (%zu runs)\n", total.seconds(), runs.size());
     return status;
 }
