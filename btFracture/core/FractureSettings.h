@@ -40,18 +40,15 @@ struct FractureSettings {
     // mode-I crack: 2/pi tracks within 5 %, 1.1215 overestimates 1.7-3x (tests/crack).
     double estimatorGeometryFactor = 2.0 / M_PI;
     bool estimatorUpdate = true;  // the right-hand-side update of §4.3
-    // The §4.3 update may raise a front's estimated K_eff at most this factor above the estimate
-    // from the event's crack-free stress (0: no limit); SIFs above it are scaled down to it, and
-    // each step that does so logs how many fronts it limited. The update is explicit: openings
-    // follow the estimate, and the surface-only stress of §4.2 near a crack mouth reads the
-    // crack's own opening (the coarse surface is not cut there), so on large sheets it feeds
-    // back on itself. Measured factor: <= 3.0 on the growing slab cracks where EST tracks FULL
-    // (tests/crack); median 74 after 15 steps and up to 5.7e7 after 40 on the 1,000-triangle
-    // bunny scene, whose EST fronts then never arrested (19,241 crack triangles vs FULL's 546).
-    // Every limit from 4 to 32 stopped the runaway, but what EST then grows depends on it
-    // erratically (README "Accuracy against time"); 4-6 keep the window pane scene from
-    // separating, 12 overgrew least across the four bunny scenes.
-    double estimatorUpdateGainLimit = 12.0;
+    // If > 0, the §4.3 update may raise a front's estimated K_eff at most this factor above the
+    // estimate from the event's crack-free stress; SIFs above it are scaled down to it, and each
+    // step that does so logs how many fronts it limited. Off by default: it was 12 while crack
+    // fronts could grow outside the body (fixed in stop 21), where the explicit update fed back
+    // on itself (19,241 EST crack triangles against FULL's 546 on the 1,000-triangle bunny).
+    // Re-measured with fronts kept inside, no limit runs away (bunny 1,000: 1,129 EST crack
+    // triangles against FULL's 728; limits 4-32 give 1,259-1,605, erratically) and limits >= 16
+    // change nothing on the other bunny scenes (README "Accuracy against time").
+    double estimatorUpdateGainLimit = 0.0;
     MaterialNoise noise;
     // Validates ranges; throws btfracture::Error naming the field and value.
     void validate() const;
