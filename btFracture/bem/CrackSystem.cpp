@@ -8,6 +8,7 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 namespace btfracture {
@@ -35,7 +36,23 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
     for (int i = 0; i < static_cast<int>(unknowns.size()); ++i) column[unknowns[i]] = i;
     CrackSurfaceCoupling out{Eigen::MatrixXd::Zero(3 * n, 3 * unknowns.size()),
                              Eigen::MatrixXd::Zero(3 * unknowns.size(), 3 * m)};
-    const std::vector<int> support = supportOf(cracks, unknowns);
+    // Per support triangle, once: its panel, and per corner the operator curl and the local
+    // column of its unknown (-1: not one of `unknowns`).
+    struct CrackSide {
+        Panel panel;
+        std::array<Eigen::Vector3d, 3> curl;
+        std::array<int, 3> column;
+    };
+    std::vector<CrackSide> support;
+    for (int kappa : supportOf(cracks, unknowns)) {
+        CrackSide side{cracks.panel(kappa, n), {}, {-1, -1, -1}};
+        for (int b = 0; b < 3; ++b) {
+            side.curl[b] = cracks.operatorCurl(kappa, b);
+            const auto it = column.find(cracks.unknownOf(cracks.triangle(kappa)[b]));
+            if (it != column.end()) side.column[b] = 3 * it->second;
+        }
+        support.push_back(side);
+    }
     // Each crack triangle writes only its own unknowns' columns of C and rows of G, but two
     // support triangles share unknowns: loop over surface triangles in parallel instead, each
     // writing its own nodes' rows of C (coloured) and its own columns of G.
@@ -46,23 +63,21 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
         for (int g = 0; g < count; ++g) {
             const int sigma = group[g];
             const Panel surface = panelOf(mesh, sigma);
-            for (int kappa : support) {
-                const Panel crack = cracks.panel(kappa, n);
+            std::array<Eigen::Vector3d, 3> surfaceCurl;
+            for (int a = 0; a < 3; ++a) surfaceCurl[a] = mesh.hatCurl(sigma, a);
+            for (const CrackSide& crack : support) {
                 const PairIntegrals pi =
-                    integratePair(surface, crack, q);  // x on the surface, y on the crack
+                    integratePair(surface, crack.panel, q);  // x on the surface, y on the crack
                 const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
                 for (int b = 0; b < 3; ++b) {
-                    const int k = cracks.unknownOf(cracks.triangle(kappa)[b]);
-                    const auto it = column.find(k);
-                    if (k < 0 || it == column.end()) continue;
-                    const int col = 3 * it->second;
-                    const Eigen::Vector3d d = cracks.operatorCurl(kappa, b);
+                    const int col = crack.column[b];
+                    if (col < 0) continue;
+                    const Eigen::Vector3d& d = crack.curl[b];
                     double P[9];
                     symTimesCross(coeff.L, d.data(), P);
                     for (int a = 0; a < 3; ++a) {
-                        const Eigen::Vector3d c = mesh.hatCurl(sigma, a);
                         const int row = 3 * mesh.triangle(sigma)[a];
-                        addStiffnessBlock(c.data(), d.data(), P, mu * coeff.a, 1.0,
+                        addStiffnessBlock(surfaceCurl[a].data(), d.data(), P, mu * coeff.a, 1.0,
                                           [&](int i, int j, double v) { out.C(row + i, col + j) += v; });
                     }
                     // Crack test hat against the traction of sigma (no mass term off the surface).
