@@ -49,7 +49,8 @@ void integrateAdaptive(const Eigen::Vector3d& x, const SubTriangle& s, const Eig
     const Eigen::Vector3d closest = closestPointOnTriangle(x, s.corner[0], s.corner[1], s.corner[2]);
     const double size = std::max({(s.corner[1] - s.corner[0]).norm(), (s.corner[2] - s.corner[1]).norm(),
                                   (s.corner[0] - s.corner[2]).norm()});
-    if ((closest - x).norm() < settings.subdivisionRatio * size && depth < settings.maxSubdivisions) {
+    const double distance = (closest - x).norm();
+    if (distance < settings.subdivisionRatio * size && depth < settings.maxSubdivisions) {
         Eigen::Vector3d m[3], um[3];
         for (int k = 0; k < 3; ++k) {
             m[k] = 0.5 * (s.corner[k] + s.corner[(k + 1) % 3]);
@@ -64,7 +65,10 @@ void integrateAdaptive(const Eigen::Vector3d& x, const SubTriangle& s, const Eig
             integrateAdaptive(x, child, n, q, E, nu, settings, depth + 1, sigma);
         return;
     }
-    for (const auto& p : triangleRule(settings.ruleDegree).points) {
+    const int degree = distance >= settings.veryFarRatio * size ? settings.veryFarDegree
+                       : distance >= settings.farRatio * size   ? settings.farDegree
+                                                                : settings.ruleDegree;
+    for (const auto& p : triangleRule(degree).points) {
         const Eigen::Vector3d y = p.l0 * s.corner[0] + p.l1 * s.corner[1] + p.l2 * s.corner[2];
         const Eigen::Vector3d uy = p.l0 * s.u[0] + p.l1 * s.u[1] + p.l2 * s.u[2];
         addSomiglianaStress(x, y, n, q, uy, E, nu, p.w * s.area, sigma);

@@ -18,10 +18,17 @@ struct StressEvaluationSettings {
     double nearFraction = 0.25;
     double farFraction = 0.5;
     // Adaptive quadrature: a (sub)triangle closer than subdivisionRatio times its size to the
-    // point is split in four, at most maxSubdivisions times; leaves use `ruleDegree`.
+    // point is split in four, at most maxSubdivisions times; leaves use `ruleDegree` (16 points),
+    // or fewer points farther away: `farDegree` (6) from farRatio sizes, `veryFarDegree` (3)
+    // from veryFarRatio sizes (the kernels of Eq. 7 are smooth there; the rule's error falls as
+    // (size / distance)^(degree + 1)).
     double subdivisionRatio = 2.0;
     int maxSubdivisions = 8;
     int ruleDegree = 6;
+    double farRatio = 4.0;
+    int farDegree = 4;
+    double veryFarRatio = 8.0;
+    int veryFarDegree = 2;
 };
 
 class StressEvaluator {
