@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace btfracture {
 
@@ -91,9 +92,10 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
         displacementCorrelation(cracks_, Eigen::VectorXd::Zero(3 * cracks_.nodeCount()), m);
     const StressEvaluator stress(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), displacements_,
                                  tractions_);
-    const double limit = settings_.estimatorUpdate ? settings_.estimatorUpdateGainLimit : 0.0;
-    const StressEvaluator crackFree(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), crackFree_,
-                                    tractions_);
+    const double limit = gainLimit();
+    std::optional<StressEvaluator> crackFree;  // only the gain limit reads the crack-free stress
+    if (limit > 0.0)
+        crackFree.emplace(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), crackFree_, tractions_);
     auto Keff = [&](const FrontSifs& s) { return effectiveK(s.KI, s.KII, s.KIII, m.poissonRatio()); };
     std::vector<FrontSifs> out;
     out.reserve(frames.size());
@@ -109,7 +111,7 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
         if (limit > 0.0) {  // the §4.3 update raises K_eff at most `limit` times (FractureSettings)
             const double K = Keff(e),
                          bound = limit *
-                                 Keff(estimateSifs(f.frame, crackFree.stressAt(f.position), area,
+                                 Keff(estimateSifs(f.frame, crackFree->stressAt(f.position), area,
                                                    m.compressiveFactor(), settings_.estimatorGeometryFactor));
             if (K > bound) {
                 const double scale = bound / K;
@@ -267,7 +269,7 @@ void FractureSolver::switchToEstimator() {
         displacements_ = solver_.displacementsFromLoad(load_ - crackLoad_);
         estimatedOpenings_ = solvedOpenings_;
     }
-    crackFree_ = solver_.displacements(tractions_);
+    if (gainLimit() > 0.0) crackFree_ = solver_.displacements(tractions_);
     full_.reset();
     active_ = FractureMethod::Estimated;
     logf(LogLevel::Info, "fracture: HYBRID switched to the estimator at ", meshElements(), " BEM elements");

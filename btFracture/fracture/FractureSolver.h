@@ -92,6 +92,8 @@ private:
     void recordLeavingOpenings(const std::vector<int>& fresh, const Eigen::VectorXd& cod);
     int meshElements() const { return solver_.mesh().triangleCount() + cracks_.triangleCount(); }
     std::vector<double> sheetAreasInBody();
+    // EST's §4.3 gain limit in force (0: none; FractureSettings::estimatorUpdateGainLimit).
+    double gainLimit() const { return settings_.estimatorUpdate ? settings_.estimatorUpdateGainLimit : 0.0; }
 
     const ElasticSolver& solver_;
     MaterialField field_;
@@ -101,7 +103,8 @@ private:
     FractureMethod active_;
     double meanSize_ = 0.0;  // mean BEM triangle diameter h [m]
     Eigen::VectorXd tractions_, load_, crackLoad_, displacements_;
-    Eigen::VectorXd crackFree_;        // EST: the event's crack-free displacements (no §4.3)
+    Eigen::VectorXd
+        crackFree_;  // EST: the event's crack-free displacements (no §4.3; read by the gain limit only)
     Eigen::VectorXd leavingOpenings_;  // FULL: per crack node, the §4.3 estimate of its opening
     int gainLimited_ = 0;
     Eigen::VectorXd estimatedOpenings_;  // EST: per crack node, 3 each

@@ -83,7 +83,8 @@ Outcome runScenario(const Expect& expect) {
     const bool ground = !scene.bodies.empty() && scene.bodies[0].shape.type == SceneShapeType::Plane;
     // Tunnelling, as in tests/stability: a centre of mass deeper in the ground than the largest
     // body's largest half extent is passing through it; shallower it may dip in (bowl_drop at stop
-    // 21: a 17 mm^3 speck 6.2 cm deep for 4 steps, then back up), and at the end support/GroundCheck.h.
+    // 21: a 17 mm^3 speck 6.2 cm deep for 4 steps, then back up). At the end, none may lie wholly
+    // below the ground (support/GroundCheck.h).
     double depthLimit = 0.0;  // [m]
     for (const auto& body : world.bodies()) {
         if (body.plane) continue;
