@@ -12,10 +12,8 @@ namespace {
 
 // Per-triangle data the assembly loop reads many times.
 struct AssemblyCache {
-    std::vector<Panel> panels;
+    std::vector<QuadraturePanel> panels;
     std::vector<std::array<Eigen::Vector3d, 3>> curls;  // n x grad(phi_a), constant per triangle
-    std::vector<std::array<PanelPoints, 4>> points;     // one point set per separated rule level
-    std::array<int, 4> degrees{};
     // Node-sharing partners tau >= t of each triangle t with their Sauter-Schwab integrals.
     std::vector<std::vector<std::pair<int, PairIntegrals>>> singular;
 };
@@ -23,19 +21,13 @@ struct AssemblyCache {
 AssemblyCache buildCache(const SurfaceMesh& mesh, const QuadratureSettings& q) {
     const int m = mesh.triangleCount();
     AssemblyCache c;
-    c.degrees = {q.nearDegree, q.midDegree, q.farDegree, q.veryFarDegree};
-    c.panels.reserve(m);
+    c.panels = quadraturePanels(mesh, q);
     c.curls.resize(m);
-    c.points.resize(m);
     c.singular.resize(m);
-    for (int t = 0; t < m; ++t) {
-        c.panels.push_back(panelOf(mesh, t));
+    for (int t = 0; t < m; ++t)
         for (int a = 0; a < 3; ++a) c.curls[t][a] = mesh.hatCurl(t, a);
-    }
 #pragma omp parallel for schedule(dynamic, 16)
     for (int t = 0; t < m; ++t) {
-        for (int level = 0; level < 4; ++level)
-            c.points[t][level] = PanelPoints(c.panels[t], c.degrees[level]);
         std::vector<int> partners;
         for (int v : mesh.triangle(t))
             for (int other : mesh.trianglesAtNode(v))
@@ -43,19 +35,9 @@ AssemblyCache buildCache(const SurfaceMesh& mesh, const QuadratureSettings& q) {
         std::sort(partners.begin(), partners.end());
         partners.erase(std::unique(partners.begin(), partners.end()), partners.end());
         for (int other : partners)
-            c.singular[t].emplace_back(other, integrateSingular(c.panels[t], c.panels[other], q));
+            c.singular[t].emplace_back(other, integrateSingular(c.panels[t].panel, c.panels[other].panel, q));
     }
     return c;
-}
-
-PairIntegrals separatedPair(const SurfaceMesh& mesh, const AssemblyCache& c, const QuadratureSettings& q,
-                            int sigma, int tau) {
-    const double eta = (mesh.centroid(sigma) - mesh.centroid(tau)).norm() /
-                       std::max(mesh.diameter(sigma), mesh.diameter(tau));
-    const int degree = separatedRuleDegree(eta, q);
-    const int level =
-        static_cast<int>(std::find(c.degrees.begin(), c.degrees.end(), degree) - c.degrees.begin());
-    return integrateSeparated(c.panels[sigma], c.points[sigma][level], c.panels[tau], c.points[tau][level]);
 }
 
 // dst += src^T in cache-sized tiles (a plain transposed read misses the cache on every
@@ -100,6 +82,13 @@ Panel panelOf(const SurfaceMesh& mesh, int t) {
     const auto& tri = mesh.triangle(t);
     return Panel{
         tri, {mesh.node(tri[0]), mesh.node(tri[1]), mesh.node(tri[2])}, mesh.normal(t), mesh.area(t)};
+}
+
+std::vector<QuadraturePanel> quadraturePanels(const SurfaceMesh& mesh, const QuadratureSettings& quadrature) {
+    std::vector<QuadraturePanel> panels;
+    panels.reserve(mesh.triangleCount());
+    for (int t = 0; t < mesh.triangleCount(); ++t) panels.emplace_back(panelOf(mesh, t), quadrature);
+    return panels;
 }
 
 std::vector<std::vector<int>> colourTrianglesByNodes(const SurfaceMesh& mesh) {
@@ -154,7 +143,7 @@ BoundaryOperators assembleBoundaryOperators(const SurfaceMesh& mesh, const Elast
                 if (singular != cache.singular[sigma].end() && singular->first == tau)
                     pi = (singular++)->second;
                 else
-                    pi = separatedPair(mesh, cache, quadrature, sigma, tau);
+                    pi = integrateSeparated(cache.panels[sigma], cache.panels[tau], quadrature);
                 const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
                 const auto& partnerNodes = mesh.triangle(tau);
                 const double stiffnessScale = tau == sigma ? 0.5 : 1.0;

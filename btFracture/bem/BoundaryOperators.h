@@ -25,6 +25,8 @@ struct BoundaryOperators {
 };
 
 Panel panelOf(const SurfaceMesh& mesh, int triangle);
+// Every triangle of the mesh as a QuadraturePanel, in triangle order.
+std::vector<QuadraturePanel> quadraturePanels(const SurfaceMesh& mesh, const QuadratureSettings& quadrature);
 
 // Assembles K and F in parallel (OpenMP). Deterministic: the result is bit-identical for any
 // thread count (triangles are coloured so that concurrent writers never share a node, and each

@@ -27,25 +27,26 @@ std::vector<int> supportOf(const CrackMesh& cracks, const std::vector<int>& unkn
 }  // namespace
 
 CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, const CrackMesh& cracks,
-                                                  const std::vector<int>& unknowns) {
+                                                  const std::vector<int>& unknowns, CouplingBlocks blocks) {
     const SurfaceMesh& mesh = solver.mesh();
     const int n = mesh.nodeCount(), m = mesh.triangleCount();
     const double mu = solver.material().shearModulus(), nu = solver.material().poissonRatio();
     const QuadratureSettings& q = solver.settings().quadrature;
     std::map<int, int> column;  // crack unknown -> local column
     for (int i = 0; i < static_cast<int>(unknowns.size()); ++i) column[unknowns[i]] = i;
+    const bool withLoad = blocks == CouplingBlocks::SurfaceAndLoad;
     CrackSurfaceCoupling out{Eigen::MatrixXd::Zero(3 * n, 3 * unknowns.size()),
-                             Eigen::MatrixXd::Zero(3 * unknowns.size(), 3 * m)};
+                             Eigen::MatrixXd::Zero(withLoad ? 3 * unknowns.size() : 0, withLoad ? 3 * m : 0)};
     // Per support triangle, once: its panel, and per corner the operator curl and the local
     // column of its unknown (-1: not one of `unknowns`).
     struct CrackSide {
-        Panel panel;
+        QuadraturePanel panel;
         std::array<Eigen::Vector3d, 3> curl;
         std::array<int, 3> column;
     };
     std::vector<CrackSide> support;
     for (int kappa : supportOf(cracks, unknowns)) {
-        CrackSide side{cracks.panel(kappa, n), {}, {-1, -1, -1}};
+        CrackSide side{QuadraturePanel(cracks.panel(kappa, n), q), {}, {-1, -1, -1}};
         for (int b = 0; b < 3; ++b) {
             side.curl[b] = cracks.operatorCurl(kappa, b);
             const auto it = column.find(cracks.unknownOf(cracks.triangle(kappa)[b]));
@@ -56,18 +57,19 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
     // Each crack triangle writes only its own unknowns' columns of C and rows of G, but two
     // support triangles share unknowns: loop over surface triangles in parallel instead, each
     // writing its own nodes' rows of C (coloured) and its own columns of G.
+    const std::vector<QuadraturePanel> surfacePanels = quadraturePanels(mesh, q);
     const auto colours = colourTrianglesByNodes(mesh);
     for (const auto& group : colours) {
         const int count = static_cast<int>(group.size());
 #pragma omp parallel for schedule(dynamic, 4)
         for (int g = 0; g < count; ++g) {
             const int sigma = group[g];
-            const Panel surface = panelOf(mesh, sigma);
+            const QuadraturePanel& surface = surfacePanels[sigma];
             std::array<Eigen::Vector3d, 3> surfaceCurl;
             for (int a = 0; a < 3; ++a) surfaceCurl[a] = mesh.hatCurl(sigma, a);
             for (const CrackSide& crack : support) {
-                const PairIntegrals pi =
-                    integratePair(surface, crack.panel, q);  // x on the surface, y on the crack
+                // x on the surface, y on the crack; crack ids follow the surface's, no shared node.
+                const PairIntegrals pi = integrateSeparated(surface, crack.panel, q, withLoad);
                 const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
                 for (int b = 0; b < 3; ++b) {
                     const int col = crack.column[b];
@@ -81,8 +83,9 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
                                           [&](int i, int j, double v) { out.C(row + i, col + j) += v; });
                     }
                     // Crack test hat against the traction of sigma (no mass term off the surface).
-                    addLoadBlock(d.data(), coeff, mu, -pi.doubleLayerXY[b],
-                                 [&](int i, int j, double v) { out.G(col + i, 3 * sigma + j) += v; });
+                    if (withLoad)
+                        addLoadBlock(d.data(), coeff, mu, -pi.doubleLayerXY[b],
+                                     [&](int i, int j, double v) { out.G(col + i, 3 * sigma + j) += v; });
                 }
             }
         }
@@ -147,11 +150,15 @@ int CrackSystem::update() {
             }
         }
     };
+    const QuadratureSettings& q = solver_.settings().quadrature;
+    std::vector<QuadraturePanel> panels;
+    panels.reserve(cracks_.triangleCount());
+    for (int kappa = 0; kappa < cracks_.triangleCount(); ++kappa)
+        panels.emplace_back(cracks_.panel(kappa, offset), q);
     for (int kappa = 0; kappa < cracks_.triangleCount(); ++kappa)
         for (int lambda = kappa; lambda < cracks_.triangleCount(); ++lambda) {
             if (!inSupport[kappa] && !inSupport[lambda]) continue;
-            const PairIntegrals pi = integratePair(
-                cracks_.panel(kappa, offset), cracks_.panel(lambda, offset), solver_.settings().quadrature);
+            const PairIntegrals pi = integratePair(panels[kappa], panels[lambda], q);
             const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
             addBlock(kappa, lambda, coeff, false);
             if (lambda != kappa) addBlock(kappa, lambda, coeff, true);

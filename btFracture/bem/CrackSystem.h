@@ -52,13 +52,16 @@ private:
     int assembledUnknowns_ = 0;
 };
 
-// Columns of C for crack unknowns k0..k1-1 and the matching rows of G, computed from scratch
-// (used by CrackSystem::update and by the estimator's matrix-free right-hand-side update, §4.3).
+// Columns of C for the given crack unknowns and the matching rows of G, computed from scratch
+// (used by CrackSystem::update and by the estimator's matrix-free right-hand-side update, §4.3,
+// which needs C alone: G is then left empty and its double-layer integrals are skipped).
 struct CrackSurfaceCoupling {
-    Eigen::MatrixXd C;  // 3n x 3 (k1 - k0)
-    Eigen::MatrixXd G;  // 3 (k1 - k0) x 3m
+    Eigen::MatrixXd C;  // 3n x 3 unknowns
+    Eigen::MatrixXd G;  // 3 unknowns x 3m, or empty
 };
+enum class CouplingBlocks { SurfaceAndLoad, SurfaceOnly };
 CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, const CrackMesh& cracks,
-                                                  const std::vector<int>& unknowns);
+                                                  const std::vector<int>& unknowns,
+                                                  CouplingBlocks blocks = CouplingBlocks::SurfaceAndLoad);
 
 }  // namespace btfracture

@@ -58,6 +58,10 @@ double diameterOf(const Panel& p) {
                      (p.corners[0] - p.corners[2]).norm()});
 }
 
+Eigen::Vector3d centroidOf(const Panel& p) {
+    return (p.corners[0] + p.corners[1] + p.corners[2]) / 3.0;
+}
+
 bool coplanar(const Panel& x, const Panel& y) {
     const double scale = std::max(diameterOf(x), diameterOf(y));
     for (const auto& c : y.corners)
@@ -67,11 +71,13 @@ bool coplanar(const Panel& x, const Panel& y) {
 
 }  // namespace
 
+int separatedRuleLevel(double eta, const QuadratureSettings& s) {
+    return eta < s.nearRatio ? 0 : eta < s.midRatio ? 1 : eta < s.farRatio ? 2 : 3;
+}
+
 int separatedRuleDegree(double eta, const QuadratureSettings& s) {
-    return eta < s.nearRatio  ? s.nearDegree
-           : eta < s.midRatio ? s.midDegree
-           : eta < s.farRatio ? s.farDegree
-                              : s.veryFarDegree;
+    const std::array<int, 4> degrees{s.nearDegree, s.midDegree, s.farDegree, s.veryFarDegree};
+    return degrees[separatedRuleLevel(eta, s)];
 }
 
 PanelPoints::PanelPoints(const Panel& panel, int degree) {
@@ -88,9 +94,9 @@ PanelPoints::PanelPoints(const Panel& panel, int degree) {
     }
 }
 
-PairIntegrals integrateSeparated(const Panel& x, const PanelPoints& px, const Panel& y,
-                                 const PanelPoints& py) {
-    Accumulator acc{x.normal, y.normal, true, {}};
+PairIntegrals integrateSeparated(const Panel& x, const PanelPoints& px, const Panel& y, const PanelPoints& py,
+                                 bool doubleLayer) {
+    Accumulator acc{x.normal, y.normal, doubleLayer, {}};
     for (int i = 0; i < px.count; ++i) {
         const double* a = &px.data[PanelPoints::kStride * i];
         for (int j = 0; j < py.count; ++j) {
@@ -182,13 +188,31 @@ PairIntegrals integrateSingular(const Panel& x, const Panel& y, const Quadrature
     return acc.result();
 }
 
+QuadraturePanel::QuadraturePanel(const Panel& p, const QuadratureSettings& s)
+    : panel(p), centroid(centroidOf(p)), diameter(diameterOf(p)) {
+    const std::array<int, 4> degrees{s.nearDegree, s.midDegree, s.farDegree, s.veryFarDegree};
+    for (int level = 0; level < 4; ++level) points[level] = PanelPoints(p, degrees[level]);
+}
+
 PairIntegrals integratePair(const Panel& x, const Panel& y, const QuadratureSettings& settings) {
     if (relationOf(x, y) != PairRelation::Separated) return integrateSingular(x, y, settings);
-    const Eigen::Vector3d cx = (x.corners[0] + x.corners[1] + x.corners[2]) / 3.0;
-    const Eigen::Vector3d cy = (y.corners[0] + y.corners[1] + y.corners[2]) / 3.0;
-    const int degree =
-        separatedRuleDegree((cx - cy).norm() / std::max(diameterOf(x), diameterOf(y)), settings);
+    const int degree = separatedRuleDegree(
+        (centroidOf(x) - centroidOf(y)).norm() / std::max(diameterOf(x), diameterOf(y)), settings);
     return integrateSeparated(x, PanelPoints(x, degree), y, PanelPoints(y, degree));
+}
+
+PairIntegrals integrateSeparated(const QuadraturePanel& x, const QuadraturePanel& y,
+                                 const QuadratureSettings& settings, bool doubleLayer) {
+    const int level =
+        separatedRuleLevel((x.centroid - y.centroid).norm() / std::max(x.diameter, y.diameter), settings);
+    return integrateSeparated(x.panel, x.points[level], y.panel, y.points[level], doubleLayer);
+}
+
+PairIntegrals integratePair(const QuadraturePanel& x, const QuadraturePanel& y,
+                            const QuadratureSettings& settings) {
+    if (relationOf(x.panel, y.panel) != PairRelation::Separated)
+        return integrateSingular(x.panel, y.panel, settings);
+    return integrateSeparated(x, y, settings);
 }
 
 }  // namespace btfracture

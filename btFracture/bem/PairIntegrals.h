@@ -49,8 +49,9 @@ struct QuadratureSettings {
 
 PairRelation relationOf(const Panel& x, const Panel& y);
 
-// Degree of the triangle rule for a separated pair whose centroid distance is eta times the
-// larger panel diameter.
+// Level (0 near, 1 mid, 2 far, 3 very far) and degree of the triangle rule for a separated pair
+// whose centroid distance is eta times the larger panel diameter.
+int separatedRuleLevel(double eta, const QuadratureSettings& settings);
 int separatedRuleDegree(double eta, const QuadratureSettings& settings);
 
 // Quadrature points of one panel for one rule degree, precomputed for the separated-pair loop:
@@ -64,8 +65,19 @@ struct PanelPoints {
 };
 
 // Separated pair with precomputed points (both at the degree separatedRuleDegree gives).
-PairIntegrals integrateSeparated(const Panel& x, const PanelPoints& px, const Panel& y,
-                                 const PanelPoints& py);
+// Without `doubleLayer` the two double-layer integrals are left zero (a third of the work).
+PairIntegrals integrateSeparated(const Panel& x, const PanelPoints& px, const Panel& y, const PanelPoints& py,
+                                 bool doubleLayer = true);
+
+// A panel with what every pair it enters reads: centroid, diameter (longest edge) and its points
+// at each separated-rule level. Loops that pair one panel with many build it once.
+struct QuadraturePanel {
+    QuadraturePanel(const Panel& panel, const QuadratureSettings& settings);
+    Panel panel;
+    Eigen::Vector3d centroid;
+    double diameter;
+    std::array<PanelPoints, 4> points;  // by separatedRuleLevel
+};
 // Identical, edge- or vertex-adjacent pair by Sauter-Schwab quadrature.
 PairIntegrals integrateSingular(const Panel& x, const Panel& y, const QuadratureSettings& settings);
 
@@ -74,5 +86,11 @@ PairIntegrals integrateSingular(const Panel& x, const Panel& y, const Quadrature
 // Deterministic; integratePair(y, x) equals integratePair(x, y) with the roles swapped up to
 // rounding, so callers that need exact symmetry pass pairs in a canonical order.
 PairIntegrals integratePair(const Panel& x, const Panel& y, const QuadratureSettings& settings);
+// The same with the points precomputed (equal results).
+PairIntegrals integratePair(const QuadraturePanel& x, const QuadraturePanel& y,
+                            const QuadratureSettings& settings);
+// The separated branch of it alone, for loops that know the pair shares no node.
+PairIntegrals integrateSeparated(const QuadraturePanel& x, const QuadraturePanel& y,
+                                 const QuadratureSettings& settings, bool doubleLayer = true);
 
 }  // namespace btfracture

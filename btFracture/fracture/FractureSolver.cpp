@@ -242,7 +242,8 @@ void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
         unknowns.push_back(cracks_.unknownOf(fresh[i]));
     }
     if (!settings_.estimatorUpdate || unknowns.empty()) return;
-    const CrackSurfaceCoupling coupling = assembleCrackSurfaceCoupling(solver_, cracks_, unknowns);
+    const CrackSurfaceCoupling coupling =
+        assembleCrackSurfaceCoupling(solver_, cracks_, unknowns, CouplingBlocks::SurfaceOnly);
     crackLoad_ += coupling.C * cod;
     displacements_ = solver_.displacementsFromLoad(load_ - crackLoad_);
 }
