@@ -83,25 +83,96 @@ int separatedRuleDegree(double eta, const QuadratureSettings& s) {
 PanelPoints::PanelPoints(const Panel& panel, int degree) {
     const TriangleRule& rule = triangleRule(degree);
     count = static_cast<int>(rule.points.size());
-    data.resize(kStride * count);
+    data.resize(kFields * count);
     for (int i = 0; i < count; ++i) {
         const auto& p = rule.points[i];
         const Eigen::Vector3d x = p.l0 * panel.corners[0] + p.l1 * panel.corners[1] + p.l2 * panel.corners[2];
-        double* d = &data[kStride * i];
-        d[0] = x.x(), d[1] = x.y(), d[2] = x.z();
-        d[3] = p.l0, d[4] = p.l1, d[5] = p.l2;
-        d[6] = p.w * panel.area;
+        const double fields[kFields] = {x.x(), x.y(), x.z(), p.l0, p.l1, p.l2, p.w * panel.area};
+        for (int f = 0; f < kFields; ++f) data[f * count + i] = fields[f];
     }
 }
 
+namespace {
+
+// The separated-pair sums, vectorised over the points of y: each lane j keeps its own partial
+// sums over the points of x (no reduction across lanes inside the loop), summed in a fixed
+// order at the end. 13 sums: 1/r, the six entries of r r^T / r^3, the two double layers.
+template <bool kDoubleLayer>
+PairIntegrals separatedSums(const Panel& x, const PanelPoints& px, const Panel& y, const PanelPoints& py) {
+    constexpr int kLanes = 32;  // y points per chunk (every production rule fits one chunk)
+    constexpr int kSums = 13;
+    double total[kSums] = {};
+    const int nx = px.count, ny = py.count;
+    const double* X[PanelPoints::kFields];
+    const double* Y[PanelPoints::kFields];
+    for (int f = 0; f < PanelPoints::kFields; ++f) {
+        X[f] = &px.data[f * nx];
+        Y[f] = &py.data[f * ny];
+    }
+    const double nx0 = x.normal[0], nx1 = x.normal[1], nx2 = x.normal[2];
+    const double ny0 = y.normal[0] * kInvFourPi, ny1 = y.normal[1] * kInvFourPi,
+                 ny2 = y.normal[2] * kInvFourPi;
+    for (int j0 = 0; j0 < ny; j0 += kLanes) {
+        const int lanes = std::min(kLanes, ny - j0);
+        alignas(64) double lane[kSums][kLanes];
+        for (auto& row : lane) std::fill(row, row + lanes, 0.0);
+        for (int i = 0; i < nx; ++i) {
+            const double x0 = X[0][i], x1 = X[1][i], x2 = X[2][i], wx = X[6][i];
+            const double px0 = -kInvFourPi * X[3][i], px1 = -kInvFourPi * X[4][i],
+                         px2 = -kInvFourPi * X[5][i];
+            for (int j = 0; j < lanes; ++j) {
+                const int k = j0 + j;
+                const double r0 = x0 - Y[0][k], r1 = x1 - Y[1][k], r2 = x2 - Y[2][k];
+                const double invR = 1.0 / std::sqrt(r0 * r0 + r1 * r1 + r2 * r2);
+                const double wInvR = wx * Y[6][k] * invR;
+                const double wInvR3 = wInvR * invR * invR;
+                const double s0 = wInvR3 * r0, s1 = wInvR3 * r1, s2 = wInvR3 * r2;
+                lane[0][j] += wInvR;
+                lane[1][j] += s0 * r0;
+                lane[2][j] += s0 * r1;
+                lane[3][j] += s0 * r2;
+                lane[4][j] += s1 * r1;
+                lane[5][j] += s1 * r2;
+                lane[6][j] += s2 * r2;
+                if constexpr (kDoubleLayer) {
+                    const double kXY = s0 * ny0 + s1 * ny1 + s2 * ny2;  // (x - y).n_y / (4 pi r^3)
+                    const double kYX = s0 * nx0 + s1 * nx1 + s2 * nx2;  // times -1 / (4 pi) below
+                    lane[7][j] += kXY * Y[3][k];
+                    lane[8][j] += kXY * Y[4][k];
+                    lane[9][j] += kXY * Y[5][k];
+                    lane[10][j] += kYX * px0;
+                    lane[11][j] += kYX * px1;
+                    lane[12][j] += kYX * px2;
+                }
+            }
+        }
+        for (int sum = 0; sum < (kDoubleLayer ? kSums : 7); ++sum)
+            for (int j = 0; j < lanes; ++j) total[sum] += lane[sum][j];
+    }
+    PairIntegrals out;
+    out.inverseDistance = total[0];
+    out.dyadic << total[1], total[2], total[3], total[2], total[4], total[5], total[3], total[5], total[6];
+    out.doubleLayerXY << total[7], total[8], total[9];
+    out.doubleLayerYX << total[10], total[11], total[12];
+    return out;
+}
+
+}  // namespace
+
 PairIntegrals integrateSeparated(const Panel& x, const PanelPoints& px, const Panel& y, const PanelPoints& py,
                                  bool doubleLayer) {
+    if (py.count >= 4)
+        return doubleLayer ? separatedSums<true>(x, px, y, py) : separatedSums<false>(x, px, y, py);
+    // Too few lanes to pay for the lane sums (the 3-point rule of far pairs): one point pair at a time.
     Accumulator acc{x.normal, y.normal, doubleLayer, {}};
-    for (int i = 0; i < px.count; ++i) {
-        const double* a = &px.data[PanelPoints::kStride * i];
-        for (int j = 0; j < py.count; ++j) {
-            const double* b = &py.data[PanelPoints::kStride * j];
-            acc.add(a, b, a + 3, b + 3, a[6] * b[6]);
+    const int nx = px.count, ny = py.count;
+    for (int i = 0; i < nx; ++i) {
+        const double a[3] = {px.data[i], px.data[nx + i], px.data[2 * nx + i]};
+        const double phiX[3] = {px.data[3 * nx + i], px.data[4 * nx + i], px.data[5 * nx + i]};
+        for (int j = 0; j < ny; ++j) {
+            const double b[3] = {py.data[j], py.data[ny + j], py.data[2 * ny + j]};
+            const double phiY[3] = {py.data[3 * ny + j], py.data[4 * ny + j], py.data[5 * ny + j]};
+            acc.add(a, b, phiX, phiY, px.data[6 * nx + i] * py.data[6 * ny + j]);
         }
     }
     return acc.result();

@@ -54,10 +54,10 @@ PairRelation relationOf(const Panel& x, const Panel& y);
 int separatedRuleLevel(double eta, const QuadratureSettings& settings);
 int separatedRuleDegree(double eta, const QuadratureSettings& settings);
 
-// Quadrature points of one panel for one rule degree, precomputed for the separated-pair loop:
-// per point x, y, z, then the three hat values, then weight * area.
+// Quadrature points of one panel for one rule degree, precomputed for the separated-pair loop,
+// field by field (x, y, z, the three hat values, weight * area; `count` values each).
 struct PanelPoints {
-    static constexpr int kStride = 7;
+    static constexpr int kFields = 7;
     PanelPoints() = default;
     PanelPoints(const Panel& panel, int degree);
     std::vector<double> data;
