@@ -157,3 +157,60 @@ TEST(Quadrature, SeparatedPairsAreSymmetricAndConverge) {
     EXPECT_NEAR(swapped.inverseDistance, p.inverseDistance, 1e-14 * p.inverseDistance);
     EXPECT_LT((swapped.doubleLayerXY - p.doubleLayerYX).norm(), 1e-14);
 }
+
+TEST(Quadrature, SeparatedPairSumsMatchAPlainDoubleLoop) {
+    // The separated-pair kernel sums per lane of y points (chunks of 32) and skips the double
+    // layer on request; a plain double loop over the same rule is the reference, for rules of 3,
+    // 6, 25 and 121 points (the last spans four chunks).
+    const Panel x = panel({0, 1, 2}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+    const Panel y = panel({3, 4, 5}, {0.3, 0.2, 1.5}, {1.4, 0.5, 1.2}, {0.2, 1.1, 1.8});
+    for (int degree : {2, 4, 8, 20}) {
+        const TriangleRule& rule = triangleRule(degree);
+        double inverse = 0.0;
+        Eigen::Matrix3d dyadic = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d layerXY = Eigen::Vector3d::Zero(), layerYX = Eigen::Vector3d::Zero();
+        for (const auto& p : rule.points)
+            for (const auto& q : rule.points) {
+                const Eigen::Vector3d px = p.l0 * x.corners[0] + p.l1 * x.corners[1] + p.l2 * x.corners[2];
+                const Eigen::Vector3d qy = q.l0 * y.corners[0] + q.l1 * y.corners[1] + q.l2 * y.corners[2];
+                const Eigen::Vector3d r = px - qy;
+                const double w = p.w * x.area * q.w * y.area, len = r.norm();
+                inverse += w / len;
+                dyadic += w * r * r.transpose() / (len * len * len);
+                const Eigen::Vector3d hatX(p.l0, p.l1, p.l2), hatY(q.l0, q.l1, q.l2);
+                layerXY += w * r.dot(y.normal) / (4 * M_PI * len * len * len) * hatY;
+                layerYX -= w * r.dot(x.normal) / (4 * M_PI * len * len * len) * hatX;
+            }
+        const PanelPoints px(x, degree), py(y, degree);
+        const PairIntegrals all = integrateSeparated(x, px, y, py),
+                            single = integrateSeparated(x, px, y, py, false);
+        EXPECT_NEAR(all.inverseDistance / inverse, 1.0, 1e-13) << "degree " << degree;
+        EXPECT_LT((all.dyadic - dyadic).norm(), 1e-13 * dyadic.norm()) << "degree " << degree;
+        EXPECT_LT((all.doubleLayerXY - layerXY).norm(), 1e-13 * layerXY.norm()) << "degree " << degree;
+        EXPECT_LT((all.doubleLayerYX - layerYX).norm(), 1e-13 * layerYX.norm()) << "degree " << degree;
+        EXPECT_EQ(single.inverseDistance, all.inverseDistance);
+        EXPECT_EQ(single.dyadic, all.dyadic);
+        EXPECT_EQ(single.doubleLayerXY, Eigen::Vector3d::Zero());
+        EXPECT_EQ(single.doubleLayerYX, Eigen::Vector3d::Zero());
+    }
+}
+
+TEST(Quadrature, PrecomputedPanelsGiveThePlainPairs) {
+    // QuadraturePanel only caches what integratePair(Panel, Panel) computes per call: same rule
+    // level at every distance, same numbers; shared nodes still go to Sauter-Schwab.
+    QuadratureSettings settings;
+    const Panel x = panel({0, 1, 2}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+    const QuadraturePanel qx(x, settings);
+    for (double height : {0.5, 2.0, 4.0, 8.0}) {  // near, mid, far and very far rules
+        const Panel y =
+            panel({3, 4, 5}, {0.3, 0.2, height}, {1.4, 0.5, height - 0.3}, {0.2, 1.1, height + 0.2});
+        const PairIntegrals plain = integratePair(x, y, settings),
+                            cached = integratePair(qx, QuadraturePanel(y, settings), settings);
+        EXPECT_EQ(cached.inverseDistance, plain.inverseDistance) << "height " << height;
+        EXPECT_EQ(cached.dyadic, plain.dyadic) << "height " << height;
+        EXPECT_EQ(cached.doubleLayerXY, plain.doubleLayerXY) << "height " << height;
+    }
+    const Panel edge = panel({1, 0, 3}, {1, 0, 0}, {0, 0, 0}, {0.5, -0.7, 0.4});
+    EXPECT_EQ(integratePair(qx, QuadraturePanel(edge, settings), settings).inverseDistance,
+              integratePair(x, edge, settings).inverseDistance);
+}

@@ -68,6 +68,25 @@ TEST(CrackSystem, SchurMatchesMonolithicAndIncrementalMatchesScratch) {
     EXPECT_GT(schur.openings.segment<3>(0).dot(Eigen::Vector3d(0.1, 0.2, 1.0).normalized()), 0.0);
 }
 
+TEST(CrackSystem, SurfaceOnlyCouplingIsTheSameC) {
+    // EST's right-hand-side update asks for C alone: the same columns as the full coupling (the
+    // double-layer integrals it skips feed only G), and no G.
+    const ElasticSolver solver(SurfaceMesh(makeBox({0.4, 0.4, 0.4}, 4, 4, 4)), kMaterial);
+    CrackMesh cracks;
+    addDiscCrack(cracks, Eigen::Vector3d(0.02, -0.01, 0.03), Eigen::Vector3d(0.1, 0.2, 1.0), 0.1, 2);
+    cracks.refreshUnknowns();
+    std::vector<int> unknowns(cracks.unknownCount());
+    for (int k = 0; k < cracks.unknownCount(); ++k) unknowns[k] = k;
+    const CrackSurfaceCoupling both = assembleCrackSurfaceCoupling(solver, cracks, unknowns);
+    const CrackSurfaceCoupling surfaceOnly =
+        assembleCrackSurfaceCoupling(solver, cracks, unknowns, CouplingBlocks::SurfaceOnly);
+    ASSERT_EQ(both.C.cols(), 3 * cracks.unknownCount());
+    EXPECT_GT(both.C.cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(surfaceOnly.C, both.C);
+    EXPECT_EQ(surfaceOnly.G.size(), 0);
+    EXPECT_EQ(both.G.rows(), 3 * cracks.unknownCount());
+}
+
 TEST(CrackSystem, PennyCrackUnderTension) {
     // Penny crack of radius a centred in a cube of side 8a, uniaxial tension sigma normal to it,
     // four rings of elements (h = a / 4). Displacement correlation with P1 openings is biased
