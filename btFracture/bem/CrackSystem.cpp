@@ -163,6 +163,13 @@ int CrackSystem::update() {
             addBlock(kappa, lambda, coeff, false);
             if (lambda != kappa) addBlock(kappa, lambda, coeff, true);
         }
+
+    // Schur complement: C, H and D keep their old columns, so old-old entries keep their values.
+    const int added = new3 - old3;
+    schur_.conservativeResize(new3, new3);
+    schur_.rightCols(added) = D_.rightCols(added) - transposedProduct(C_, H_.rightCols(added));
+    schur_.bottomLeftCorner(added, old3) =
+        D_.bottomLeftCorner(added, old3) - transposedProduct(C_.rightCols(added), H_.leftCols(old3));
     assembledUnknowns_ = total;
     return static_cast<int>(fresh.size());
 }
@@ -175,11 +182,10 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {
         s.openings.resize(0);
         return s;
     }
-    const Eigen::MatrixXd schur = D_ - transposedProduct(C_, H_);
     const Eigen::VectorXd rhs = G_ * q - C_.transpose() * b;
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(schur);
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(schur_);
     s.openings = lu.solve(rhs);
-    const double residual = (schur * s.openings - rhs).norm() / std::max(rhs.norm(), 1e-300);
+    const double residual = (schur_ * s.openings - rhs).norm() / std::max(rhs.norm(), 1e-300);
     if (!s.openings.allFinite() || residual > 1e-8)
         throw Error("crack system: Schur complement solve failed (relative residual " +
                     std::to_string(residual) + "); the crack mesh is probably degenerate");

@@ -6,8 +6,9 @@
 //   [ C^T    D     ] [ cod ] = [ G q     ]
 // C couples surface and crack hats, D crack hats with each other (appendix Eq. 8), G q is the
 // traction that the surface loads q induce on the crack faces through the adjoint double layer
-// (zero only for cracks far from any loaded surface). Blocks are extended incrementally: when a
-// crack grows, only the rows and columns of the new unknowns are computed.
+// (zero only for cracks far from any loaded surface). Blocks, and the Schur complement
+// S = D - C^T H, are extended incrementally: when a crack grows, only the rows and columns of the
+// new unknowns are computed.
 #include <btFracture/bem/CrackMesh.h>
 #include <btFracture/bem/ElasticSolver.h>
 
@@ -49,6 +50,7 @@ private:
     const ElasticSolver& solver_;
     CrackMesh& cracks_;
     Eigen::MatrixXd C_, D_, G_, H_;  // H = K_R^-1 K^T C
+    Eigen::MatrixXd schur_;          // D - C^T H, 3k x 3k
     int assembledUnknowns_ = 0;
 };
 

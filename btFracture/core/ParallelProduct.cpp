@@ -7,7 +7,8 @@
 
 namespace btfracture {
 
-Eigen::MatrixXd transposedProduct(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+Eigen::MatrixXd transposedProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                                  const Eigen::Ref<const Eigen::MatrixXd>& b) {
     if (a.rows() != b.rows())
         throw Error("transposedProduct: " + std::to_string(a.rows()) + " rows against " +
                     std::to_string(b.rows()));

@@ -8,6 +8,7 @@
 namespace btfracture {
 
 // a^T b for a (k x m) and b (k x n): an m x n matrix.
-Eigen::MatrixXd transposedProduct(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
+Eigen::MatrixXd transposedProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                                  const Eigen::Ref<const Eigen::MatrixXd>& b);
 
 }  // namespace btfracture
