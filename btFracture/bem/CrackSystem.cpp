@@ -155,14 +155,20 @@ int CrackSystem::update() {
     panels.reserve(cracks_.triangleCount());
     for (int kappa = 0; kappa < cracks_.triangleCount(); ++kappa)
         panels.emplace_back(cracks_.panel(kappa, offset), q);
+    // The pairs' integrals in parallel, then their blocks added in pair order (deterministic).
+    std::vector<std::pair<int, int>> pairs;
     for (int kappa = 0; kappa < cracks_.triangleCount(); ++kappa)
-        for (int lambda = kappa; lambda < cracks_.triangleCount(); ++lambda) {
-            if (!inSupport[kappa] && !inSupport[lambda]) continue;
-            const PairIntegrals pi = integratePair(panels[kappa], panels[lambda], q);
-            const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
-            addBlock(kappa, lambda, coeff, false);
-            if (lambda != kappa) addBlock(kappa, lambda, coeff, true);
-        }
+        for (int lambda = kappa; lambda < cracks_.triangleCount(); ++lambda)
+            if (inSupport[kappa] || inSupport[lambda]) pairs.emplace_back(kappa, lambda);
+    std::vector<PairCoefficients> coeffs(pairs.size());
+#pragma omp parallel for schedule(dynamic, 64)
+    for (int i = 0; i < static_cast<int>(pairs.size()); ++i)
+        coeffs[i] = coefficientsOf(integratePair(panels[pairs[i].first], panels[pairs[i].second], q), mu, nu);
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+        const auto [kappa, lambda] = pairs[i];
+        addBlock(kappa, lambda, coeffs[i], false);
+        if (lambda != kappa) addBlock(kappa, lambda, coeffs[i], true);
+    }
 
     // Schur complement: C, H and D keep their old columns, so old-old entries keep their values.
     const int added = new3 - old3;
