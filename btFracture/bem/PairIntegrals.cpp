@@ -58,6 +58,11 @@ double diameterOf(const Panel& p) {
                      (p.corners[0] - p.corners[2]).norm()});
 }
 
+// The separated rules' degrees by level (separatedRuleLevel).
+std::array<int, 4> levelDegrees(const QuadratureSettings& s) {
+    return {s.nearDegree, s.midDegree, s.farDegree, s.veryFarDegree};
+}
+
 Eigen::Vector3d centroidOf(const Panel& p) {
     return (p.corners[0] + p.corners[1] + p.corners[2]) / 3.0;
 }
@@ -76,8 +81,7 @@ int separatedRuleLevel(double eta, const QuadratureSettings& s) {
 }
 
 int separatedRuleDegree(double eta, const QuadratureSettings& s) {
-    const std::array<int, 4> degrees{s.nearDegree, s.midDegree, s.farDegree, s.veryFarDegree};
-    return degrees[separatedRuleLevel(eta, s)];
+    return levelDegrees(s)[separatedRuleLevel(eta, s)];
 }
 
 PanelPoints::PanelPoints(const Panel& panel, int degree) {
@@ -261,7 +265,7 @@ PairIntegrals integrateSingular(const Panel& x, const Panel& y, const Quadrature
 
 QuadraturePanel::QuadraturePanel(const Panel& p, const QuadratureSettings& s)
     : panel(p), centroid(centroidOf(p)), diameter(diameterOf(p)) {
-    const std::array<int, 4> degrees{s.nearDegree, s.midDegree, s.farDegree, s.veryFarDegree};
+    const std::array<int, 4> degrees = levelDegrees(s);
     for (int level = 0; level < 4; ++level) points[level] = PanelPoints(p, degrees[level]);
 }
 
