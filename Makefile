@@ -7,7 +7,7 @@ SCENE     ?= demos/scenes/column_bunny.json
 
 FUZZ_BUILD ?= $(BUILD)-fuzz
 
-.PHONY: all deps configure build demo test bench bench-accuracy test-sanitize fuzz-build fuzz-short fuzz-long format format-check clean
+.PHONY: all deps configure build demo test test-native bench bench-accuracy test-sanitize fuzz-build fuzz-short fuzz-long format format-check clean
 
 all: build
 
@@ -26,10 +26,14 @@ demo: build
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
+# The same suite built for this machine's CPU (-march=native) in its own tree; CI runs both.
+test-native:
+	@$(MAKE) --no-print-directory test BUILD=$(BUILD)-native CMAKE_ARGS="$(CMAKE_ARGS) -DBTFRACTURE_NATIVE=ON"
+
 bench: build
 	@scripts/run-bench.sh $(BUILD)
 
-# The accuracy-vs-time study (issue 8): FULL / EST / HYBRID on every case, about 15 minutes on
+# The accuracy-vs-time study: FULL / EST / HYBRID on every case, about 15 minutes on
 # 2 cores; runs.csv, steps.csv, table.md and the charts into ACCURACY_OUT.
 ACCURACY_OUT ?= $(OUT)/accuracy
 bench-accuracy: build
@@ -68,4 +72,4 @@ format-check:
 	@scripts/format.sh check
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-sanitize $(FUZZ_BUILD) $(OUT)
+	rm -rf $(BUILD) $(BUILD)-native $(BUILD)-sanitize $(FUZZ_BUILD) $(OUT)
