@@ -120,6 +120,34 @@ std::vector<std::vector<Eigen::Vector3d>> decompose(const TriangleMesh& mesh,
 
 }  // namespace
 
+void CollisionShapeStorage::replacePieces(std::vector<ConvexPolytope> pieces) {
+    if (kind_ == CollisionShapeKind::GImpactMesh || pieces.size() != pieces_.size())
+        throw Error("collision shape: cannot replace the " + std::to_string(pieces_.size()) + " convex pieces of a " +
+                    toString(kind_) + " by " + std::to_string(pieces.size()));
+    std::vector<std::unique_ptr<btCollisionShape>> hulls;
+    for (const ConvexPolytope& piece : pieces) {
+        if (piece.points.size() < 4) throw Error("collision shape: a replacement convex piece has no volume");
+        auto hull = std::make_unique<btConvexHullShape>();
+        for (const auto& p : piece.points) hull->addPoint(toBullet(p), false);
+        hull->setMargin(btScalar(piece.margin));
+        hull->recalcLocalAabb();
+        hulls.push_back(std::move(hull));
+    }
+    if (kind_ == CollisionShapeKind::ConvexHull) {
+        impl_->root = std::move(hulls.front());
+    } else {
+        auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(hulls.size()));
+        btTransform identity;
+        identity.setIdentity();
+        for (const auto& hull : hulls) compound->addChildShape(identity, hull.get());
+        compound->setMargin(btScalar(margin_));
+        impl_->root = std::move(compound);  // the old compound goes before the children it points to
+        impl_->children = std::move(hulls);
+    }
+    shape_ = impl_->root.get();
+    pieces_ = std::move(pieces);
+}
+
 std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& mesh, CollisionShapeKind kind,
                                                            const CollisionShapeOptions& options) {
     const std::string name = meshName(mesh);

@@ -58,6 +58,10 @@ public:
     // The convex pieces as collision sees them (shrunk hull points + margin), body frame; empty
     // for GImpactMesh. Used to separate overlapping fragments with libccd.
     const std::vector<ConvexPolytope>& convexPieces() const { return pieces_; }
+    // Rebuilds the shape from new convex pieces (body frame; one per piece of convexPieces(), each
+    // with its margin): fragments whose pieces were cut apart (FragmentSeparation.h). Throws
+    // btfracture::Error for a GImpact mesh, a different piece count or a piece without volume.
+    void replacePieces(std::vector<ConvexPolytope> pieces);
 
 private:
     friend std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh&, CollisionShapeKind,

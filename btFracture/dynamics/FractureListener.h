@@ -1,6 +1,7 @@
 #pragma once
 // Lets an application hear about fracture events (register with
 // btFractureDynamicsWorld::addFractureListener).
+#include <btFracture/dynamics/FractureEnergy.h>
 #include <btFracture/dynamics/FractureEngine.h>
 
 #include <cstdint>
@@ -11,6 +12,7 @@ namespace btfracture {
 class btFractureRigidBody;
 
 struct FractureEventInfo {
+    std::uint64_t event = 0;         // the world's event counter (0, 1, ...): FractureEnergyAudit::event
     std::uint64_t step = 0;          // the world's internal step counter at the event
     int contacts = 0;                // contacts handed to the engine
     double impulseSum = 0.0;         // summed normal impulse on the parent [N s]
@@ -34,6 +36,11 @@ public:
     virtual void onFractureEvent(btFractureRigidBody& parent,
                                  const std::vector<btFractureRigidBody*>& fragments,
                                  const FractureEventInfo& info) = 0;
+
+    // Called once per event when its energy audit is complete: after the replayed step and
+    // btFractureDynamicsWorld::energyAuditSteps() following steps, or earlier from
+    // btFractureDynamicsWorld::finishEnergyAudits().
+    virtual void onFractureEnergyAudit(const FractureEnergyAudit& /*audit*/) {}
 };
 
 }  // namespace btfracture

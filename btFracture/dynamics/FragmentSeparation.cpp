@@ -1,6 +1,11 @@
 #include <btFracture/dynamics/FragmentSeparation.h>
 
 #include <btFracture/core/Log.h>
+#include <btFracture/core/Error.h>
+#include <btFracture/geometry/ConvexClip.h>
+#include <btFracture/geometry/ConvexHull.h>
+
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -104,6 +109,96 @@ SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies,
         logf(LogLevel::Warning, "fragment separation: ", cappedCount, " of ", bodies.size(),
              " fragments need more than ", options.maxPushFraction,
              " of their size to clear their overlaps; pushes capped there, the rest is left to the solver");
+    return result;
+}
+
+bool containWithin(SeparationBody& body, const std::vector<ConvexPolytope>& container) {
+    std::vector<Eigen::Vector3d> points;
+    double margin = 0.0;
+    for (const ConvexPolytope& piece : container) {
+        points.insert(points.end(), piece.points.begin(), piece.points.end());
+        margin = std::max(margin, piece.margin);
+    }
+    TriangleMesh hull;
+    try {
+        hull = convexHullMesh(points, "parent collision shape");
+    } catch (const Error&) {
+        return false;  // no volume to contain anything in
+    }
+    const double tolerance = std::max(0.1 * margin, 1e-6 * body.length);
+    bool changed = false;
+    for (ConvexPolytope& piece : body.pieces) {
+        ConvexPolytope cut = piece;
+        for (const auto& t : hull.triangles) {
+            const Eigen::Vector3d& a = hull.vertices[t[0]];
+            const Eigen::Vector3d n = (hull.vertices[t[1]] - a).cross(hull.vertices[t[2]] - a);
+            if (!(n.norm() > 0.0)) continue;
+            const Eigen::Vector3d unit = n.normalized();
+            const double offset = unit.dot(a) + margin;
+            // Pieces that reach past a face by less than a tenth of the margin (the shapes' single-
+            // precision rounding is of that order) are left alone.
+            if (extentAlong(cut, unit)[1] <= offset + tolerance) continue;
+            cut = clipConvexPolytope(cut, unit, offset);
+            if (cut.points.size() < 4) break;
+        }
+        if (cut.points.size() < 4 || cut.points == piece.points) continue;
+        piece = std::move(cut);
+        changed = true;
+    }
+    return changed;
+}
+
+TrimResult trimOverlaps(std::vector<SeparationBody>& bodies, const TrimOptions& options) {
+    const std::size_t n = bodies.size();
+    TrimResult result;
+    result.changed.assign(n, 0);
+    std::vector<std::vector<double>> floor(n);  // smallest hull volume each piece may be cut to
+    for (std::size_t i = 0; i < n; ++i)
+        for (const ConvexPolytope& piece : bodies[i].pieces)
+            floor[i].push_back(options.keepVolumeFraction * hullVolume(piece));
+    for (int sweep = 0; sweep < options.maxSweeps; ++sweep) {
+        bool cut = false;
+        result.declined = 0;
+        std::vector<Sphere> spheres(n);
+        for (std::size_t i = 0; i < n; ++i) spheres[i] = boundingSphere(bodies[i]);
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j) {
+                if (spheres[i].radius < 0.0 || spheres[j].radius < 0.0) continue;
+                if ((spheres[i].centre - spheres[j].centre).norm() > spheres[i].radius + spheres[j].radius)
+                    continue;
+                const double tolerance = options.tolerance * std::min(bodies[i].length, bodies[j].length);
+                const double mi = bodies[i].mass, mj = bodies[j].mass;
+                for (std::size_t pa = 0; pa < bodies[i].pieces.size(); ++pa)
+                    for (std::size_t pb = 0; pb < bodies[j].pieces.size(); ++pb) {
+                        ConvexPolytope& a = bodies[i].pieces[pa];
+                        ConvexPolytope& b = bodies[j].pieces[pb];
+                        const Penetration pen = convexPenetration(a, b);
+                        if (!pen.overlapping || pen.depth <= tolerance) continue;
+                        // b lies ahead of a along d: a keeps d.x <= c, b keeps d.x >= c.
+                        const Eigen::Vector3d& d = pen.direction;
+                        const Eigen::Vector2d ea = extentAlong(a, d), eb = extentAlong(b, d);
+                        const double overlap = ea[1] - eb[0];
+                        if (!(overlap > 0.0)) continue;
+                        double shareA = (ea[1] - ea[0]) / ((ea[1] - ea[0]) + (eb[1] - eb[0]));
+                        if (mi > options.heavyRatio * mj) shareA = 0.0;
+                        if (mj > options.heavyRatio * mi) shareA = 1.0;
+                        const double c = ea[1] - shareA * overlap;
+                        ConvexPolytope cutA = shareA > 0.0 ? clipConvexPolytope(a, d, c) : a;
+                        ConvexPolytope cutB = shareA < 1.0 ? clipConvexPolytope(b, -d, -c) : b;
+                        if (hullVolume(cutA) < floor[i][pa] || hullVolume(cutB) < floor[j][pb] ||
+                            cutA.points.size() < 4 || cutB.points.size() < 4) {
+                            ++result.declined;
+                            continue;
+                        }
+                        a = std::move(cutA);
+                        b = std::move(cutB);
+                        result.changed[i] = result.changed[j] = 1;
+                        ++result.cuts;
+                        cut = true;
+                    }
+            }
+        if (!cut) break;
+    }
     return result;
 }
 

@@ -39,4 +39,35 @@ struct SeparationResult {
 SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies,
                                   const SeparationOptions& options = {});
 
+// Cuts every convex piece of `body` down to the convex hull of `container` (the parent's convex
+// pieces, margins included): a fragment's collision shape then reaches nowhere its parent's did
+// not, so it starts overlapping nothing (the ground, a neighbour) that its parent did not touch.
+// A piece reaching past a face by less than a tenth of the container's margin, or that would keep
+// no volume, is left as it is. Returns whether a piece changed.
+bool containWithin(SeparationBody& body, const std::vector<ConvexPolytope>& container);
+
+// Before any push: two overlapping convex pieces of different bodies are cut apart by a plane
+// normal to their penetration direction instead of moving the bodies (moving a fragment up off
+// a neighbour that rests on the ground raises the potential energy by m g times the overlap:
+// energy the fracture would add). Each keeps its side of the plane, margins included, so the two
+// touch. Bodies of similar mass share the overlap w in proportion to the pieces' extents along
+// the normal; of a body more than heavyRatio times heavier than the other, nothing is cut (the
+// lighter piece loses the whole overlap). No piece is cut below keepVolumeFraction of its
+// original hull volume (a small piece inside a large one's hull, where a plane cannot stand for
+// the crack between them): such overlaps are left to the push, which moves the lighter body.
+struct TrimOptions {
+    int maxSweeps = 4;
+    double tolerance = 1e-6;           // overlaps below tolerance * min length are left alone
+    double heavyRatio = 4.0;           // mass ratio above which only the lighter body is cut
+    double keepVolumeFraction = 0.7;   // of a piece's original hull volume
+};
+
+struct TrimResult {
+    std::vector<char> changed;  // per body: its pieces were cut
+    int cuts = 0;               // pairs cut apart
+    int declined = 0;           // overlapping pairs left to the push (cut too deep)
+};
+
+TrimResult trimOverlaps(std::vector<SeparationBody>& bodies, const TrimOptions& options = {});
+
 }  // namespace btfracture

@@ -6,6 +6,7 @@
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/ContactCurvature.h>
+#include <btFracture/dynamics/FractureEnergy.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/HertzContact.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
@@ -66,6 +67,22 @@ std::vector<Eigen::Vector3d> staticContactNormals(btDispatcher& dispatcher, cons
         }
     }
     return normals;
+}
+
+// Dynamic bodies with solved contacts with `body` (each once, in manifold order).
+std::vector<const btRigidBody*> dynamicContactPartners(btDispatcher& dispatcher, const btCollisionObject& body) {
+    std::vector<const btRigidBody*> partners;
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+        const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+        const bool isBody0 = manifold->getBody0() == &body;
+        if (!isBody0 && manifold->getBody1() != &body) continue;
+        if (manifold->getNumContacts() == 0 || !wasSolved(*manifold)) continue;
+        const btRigidBody* other = btRigidBody::upcast(isBody0 ? manifold->getBody1() : manifold->getBody0());
+        if (other && !other->isStaticOrKinematicObject() &&
+            std::find(partners.begin(), partners.end(), other) == partners.end())
+            partners.push_back(other);
+    }
+    return partners;
 }
 
 const char* className(FragmentSpec::Class cls) {
@@ -162,9 +179,65 @@ private:
     std::pair<int, int> saved_[3];  // iterations, minimum points: convex, then the two plane orders
 };
 
+// While alive (and `active`), penetrations deeper than `depth` are recovered by split impulse;
+// the solver info is restored afterwards.
+class SplitImpulseBelowDepth {
+public:
+    SplitImpulseBelowDepth(btContactSolverInfo& info, bool active, double depth)
+        : info_(info), active_(active), split_(info.m_splitImpulse),
+          threshold_(info.m_splitImpulsePenetrationThreshold) {
+        if (!active_) return;
+        info_.m_splitImpulse = 1;
+        // Bullet uses split impulse where the (negative) penetration is below the threshold.
+        info_.m_splitImpulsePenetrationThreshold = btScalar(-depth);
+    }
+    ~SplitImpulseBelowDepth() {
+        if (!active_) return;
+        info_.m_splitImpulse = split_;
+        info_.m_splitImpulsePenetrationThreshold = threshold_;
+    }
+    SplitImpulseBelowDepth(const SplitImpulseBelowDepth&) = delete;
+    SplitImpulseBelowDepth& operator=(const SplitImpulseBelowDepth&) = delete;
+
+private:
+    btContactSolverInfo& info_;
+    bool active_;
+    int split_;
+    btScalar threshold_;
+};
+
 Eigen::Matrix3d worldInertia(const btRigidBody& body) {
     const Eigen::Matrix3d R = toEigen(body.getWorldTransform().getBasis());
     return R * toEigen(body.getInvInertiaDiagLocal()).cwiseInverse().asDiagonal() * R.transpose();
+}
+
+// Kinetic energy of `fragments` moving rigidly with `parent`: v + w x (x_f - x_parent), w.
+double rigidMotionKineticEnergy(const std::vector<btFractureRigidBody*>& fragments, const btRigidBody& parent) {
+    const Eigen::Vector3d origin = toEigen(parent.getWorldTransform().getOrigin());
+    const Eigen::Vector3d v = toEigen(parent.getLinearVelocity()), w = toEigen(parent.getAngularVelocity());
+    double sum = 0.0;
+    for (const btFractureRigidBody* f : fragments) {
+        const Eigen::Vector3d u = v + w.cross(toEigen(f->getWorldTransform().getOrigin()) - origin);
+        sum += 0.5 * u.squaredNorm() / double(f->getInvMass()) + 0.5 * w.dot(worldInertia(*f) * w);
+    }
+    return sum;
+}
+
+// Gravitational potential energy of fragments not yet in the world (they get the world's gravity
+// when added): -m g.x under the parent's gravity g.
+double potentialEnergy(const std::vector<btFractureRigidBody*>& fragments, const btVector3& g) {
+    double sum = 0.0;
+    for (const btFractureRigidBody* f : fragments) {
+        const btVector3 x = f->getCenterOfMassPosition();
+        sum -= (double(g.x()) * x.x() + double(g.y()) * x.y() + double(g.z()) * x.z()) / double(f->getInvMass());
+    }
+    return sum;
+}
+
+double summedKineticEnergy(const std::vector<const btRigidBody*>& bodies) {
+    double sum = 0.0;
+    for (const btRigidBody* b : bodies) sum += kineticEnergy(*b);
+    return sum;
 }
 
 // Moves the fragments by their separation pushes and gives them the parent's pre-step rigid
@@ -235,6 +308,15 @@ struct btFractureDynamicsWorld::Event {
     FractureEventInfo info;
     std::vector<btFractureRigidBody*> fragments;
     std::vector<Eigen::Vector3d> staticNormals;  // the parent's contacts with static geometry
+    std::vector<const btRigidBody*> partners;    // dynamic bodies in contact with the parent
+    FractureEnergyAudit energy;
+    double bodyPotential = 0.0;  // the parent's, before the step
+};
+
+struct btFractureDynamicsWorld::OpenAudit {
+    FractureEnergyAudit audit;
+    std::vector<const btRigidBody*> fragments;  // those still in the world
+    int stepsLeft = 0;
 };
 
 btFractureDynamicsWorld::btFractureDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* pairCache,
@@ -310,6 +392,8 @@ void btFractureDynamicsWorld::addRigidBody(btRigidBody* body, int group, int mas
 
 void btFractureDynamicsWorld::removeRigidBody(btRigidBody* body) {
     btDiscreteDynamicsWorld::removeRigidBody(body);
+    for (OpenAudit& open : audits_)
+        open.fragments.erase(std::remove(open.fragments.begin(), open.fragments.end(), body), open.fragments.end());
     if (btFractureRigidBody* f = btFractureRigidBody::upcast(body); f && f->inFractureWorld_) {
         f->inFractureWorld_ = false;
         --fractureBodies_;
@@ -323,7 +407,60 @@ void btFractureDynamicsWorld::removeRigidBody(btRigidBody* body) {
     }
 }
 
+void btFractureDynamicsWorld::setSplitImpulseForFragments(bool enabled, double depth) {
+    if (!(depth > 0.0) || !std::isfinite(depth))
+        throw Error("btFractureDynamicsWorld: split impulse depth must be positive and finite, not " +
+                    std::to_string(depth) + " m");
+    splitImpulseForFragments_ = enabled;
+    splitImpulseDepth_ = depth;
+}
+
+void btFractureDynamicsWorld::setEnergyAuditSteps(int steps) {
+    if (steps < 0) throw Error("btFractureDynamicsWorld: energy audit steps must be >= 0, not " + std::to_string(steps));
+    energyAuditSteps_ = steps;
+}
+
 void btFractureDynamicsWorld::internalSingleStepSimulation(btScalar timeStep) {
+    const std::size_t open = audits_.size();  // audits opened in this step start following in the next
+    {
+        const SplitImpulseBelowDepth split(getSolverInfo(), splitImpulseForFragments_ && !owned_.empty(),
+                                           splitImpulseDepth_);
+        stepWithFracture(timeStep);
+    }
+    if (open > 0) followEnergyAudits(open);
+}
+
+void btFractureDynamicsWorld::followEnergyAudits(std::size_t count) {
+    const double world = mechanicalEnergy(*this);
+    count = std::min(count, audits_.size());
+    bool done = false;
+    for (std::size_t k = 0; k < count; ++k) {
+        FractureEnergyAudit& a = audits_[k].audit;
+        a.worldGain = std::max(a.worldGain, world - a.worldBefore);
+        a.followingKinetic = std::max(a.followingKinetic, summedKineticEnergy(audits_[k].fragments));
+        ++a.followingSteps;
+        done = done || --audits_[k].stepsLeft == 0;
+    }
+    if (!done) return;
+    // Listeners hear completed audits in event order; the rest stay open.
+    std::vector<OpenAudit> still;
+    for (OpenAudit& a : audits_) {
+        if (a.stepsLeft == 0)
+            for (FractureListener* listener : listeners_) listener->onFractureEnergyAudit(a.audit);
+        else
+            still.push_back(std::move(a));
+    }
+    audits_ = std::move(still);
+}
+
+void btFractureDynamicsWorld::finishEnergyAudits() {
+    std::vector<OpenAudit> audits = std::move(audits_);
+    audits_.clear();
+    for (const OpenAudit& open : audits)
+        for (FractureListener* listener : listeners_) listener->onFractureEnergyAudit(open.audit);
+}
+
+void btFractureDynamicsWorld::stepWithFracture(btScalar timeStep) {
     if (!enabled_ || replaying_ || fractureBodies_ == 0) {
         btDiscreteDynamicsWorld::internalSingleStepSimulation(timeStep);
         return;
@@ -461,7 +598,7 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             body->setSettings(settings);
             continue;
         }
-        Event event{body, {}, {}, {}, {}};
+        Event event{body, {}, {}, {}, {}, {}, {}, 0.0};
         try {
             if (!buildContacts(*body, contacts)) continue;
             event.info.step = stats_.steps;
@@ -488,22 +625,39 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
         }
         if (event.outcome.fragments.empty()) continue;
         event.staticNormals = staticContactNormals(*m_dispatcher1, *body);
+        event.partners = dynamicContactPartners(*m_dispatcher1, *body);
         events.push_back(std::move(event));
     }
     if (events.empty()) return;
 
     Timer swapTimer;
     snapshot_.restore();
+    const double worldBefore = mechanicalEnergy(*this);
     for (Event& event : events) {
+        event.energy.event = event.info.event = stats_.fractureEvents;
+        event.energy.worldBefore = worldBefore;
+        event.energy.bodyKinetic = kineticEnergy(*event.parent);
+        event.energy.partnersKinetic = summedKineticEnergy(event.partners);
         event.fragments = spawnFragments(*event.parent, event.outcome);
+        event.energy.swapKinetic = rigidMotionKineticEnergy(event.fragments, *event.parent);
+        event.bodyPotential = potentialEnergy(*event.parent);
+        event.energy.swapPotentialGain =
+            potentialEnergy(event.fragments, event.parent->getGravity()) - event.bodyPotential;
         ++stats_.fractureEvents;
         stats_.fragmentsSpawned += event.fragments.size();
     }
 
-    // Push overlapping fragments apart, then give them the parent's rigid motion (momentum-exact).
+    // Cut overlapping convex pieces of the new fragments apart, push what still overlaps apart,
+    // then give the fragments the parent's rigid motion (momentum-exact).
+    std::vector<btFractureRigidBody*> spawned;
     std::vector<SeparationBody> separation;
-    for (const Event& event : events)
+    std::vector<char> reshaped;
+    for (const Event& event : events) {
+        std::vector<ConvexPolytope> parentPieces = event.parent->shapeStorage().convexPieces();
+        for (ConvexPolytope& piece : parentPieces)
+            for (auto& p : piece.points) p = toEigen(event.parent->getWorldTransform() * toBullet(p));
         for (btFractureRigidBody* f : event.fragments) {
+            spawned.push_back(f);
             SeparationBody s;
             s.blockedDirections = event.staticNormals;
             s.mass = 1.0 / double(f->getInvMass());
@@ -513,8 +667,22 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
                 for (auto& p : world.points) p = toEigen(f->getWorldTransform() * toBullet(p));
                 s.pieces.push_back(std::move(world));
             }
+            reshaped.push_back(!parentPieces.empty() && containWithin(s, parentPieces));
             separation.push_back(std::move(s));
         }
+    }
+    const TrimResult trim = trimOverlaps(separation);
+    for (std::size_t k = 0; k < spawned.size(); ++k) {
+        if (!trim.changed[k] && !reshaped[k]) continue;
+        const btTransform toBody = spawned[k]->getWorldTransform().inverse();
+        std::vector<ConvexPolytope> pieces = separation[k].pieces;
+        for (ConvexPolytope& piece : pieces)
+            for (auto& p : piece.points) p = toEigen(toBody * toBullet(p));
+        spawned[k]->replaceConvexPieces(std::move(pieces));
+    }
+    if (trim.cuts > 0)
+        logf(LogLevel::Debug, "fragment separation: ", trim.cuts, " overlapping convex pieces cut apart, ",
+             trim.declined, " left to the push");
     const SeparationResult pushes = separateOverlaps(separation);
     std::size_t index = 0;
     for (Event& event : events) {
@@ -524,6 +692,9 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
         index += event.fragments.size();
         assignParentMotion(event.fragments, eventPushes, *event.parent);
         event.info.maxSeparationPush = pushes.largestPush;
+        for (const btFractureRigidBody* f : event.fragments) event.energy.separatedKinetic += kineticEnergy(*f);
+        event.energy.separatedPotentialGain =
+            potentialEnergy(event.fragments, event.parent->getGravity()) - event.bodyPotential;
     }
 
     // Swap: parents out (their manifolds go with their broadphase pairs), fragments in, with
@@ -556,10 +727,28 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
     replaying_ = true;
     {
         const MultipointContactsForNewPairs multipoint(collisionConfiguration_);
+        const SplitImpulseBelowDepth split(getSolverInfo(), splitImpulseForFragments_, splitImpulseDepth_);
         btDiscreteDynamicsWorld::internalSingleStepSimulation(timeStep);
     }
     replaying_ = false;
     ++stats_.replayedSteps;
+
+    const double worldAfter = mechanicalEnergy(*this);
+    for (Event& event : events) {
+        OpenAudit open;
+        open.audit = event.energy;
+        // Fragments that broke again in this step's listeners are gone; the rest are followed.
+        for (const btFractureRigidBody* f : event.fragments)
+            if (f->isInWorld()) open.fragments.push_back(f);
+        open.audit.replayKinetic = summedKineticEnergy(open.fragments);
+        open.audit.followingKinetic = open.audit.replayKinetic;
+        open.audit.worldGain = worldAfter - open.audit.worldBefore;
+        open.stepsLeft = energyAuditSteps_;
+        if (open.stepsLeft == 0)
+            for (FractureListener* listener : listeners_) listener->onFractureEnergyAudit(open.audit);
+        else
+            audits_.push_back(std::move(open));
+    }
 }
 
 std::vector<btFractureRigidBody*> btFractureDynamicsWorld::spawnFragments(btFractureRigidBody& parent,
@@ -619,6 +808,12 @@ std::vector<btFractureRigidBody*> btFractureDynamicsWorld::spawnFragments(btFrac
             const btScalar scale = btScalar(body->characteristicLength() / parent.characteristicLength());
             body->setCcdMotionThreshold(parent.getCcdMotionThreshold() * scale);
             body->setCcdSweptSphereRadius(parent.getCcdSweptSphereRadius() * scale);
+        } else {
+            // Chips are small and start at their parent's speed: one that moves more than half its
+            // size in a step is swept (continuous collision), so it cannot pass through the ground.
+            const double size = body->characteristicLength();
+            body->setCcdMotionThreshold(btScalar(0.5 * size));
+            body->setCcdSweptSphereRadius(btScalar(0.2 * size));
         }
         body->setActivationState(ACTIVE_TAG);
         fragments.push_back(body.get());

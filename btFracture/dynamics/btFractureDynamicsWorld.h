@@ -27,7 +27,23 @@
 //     replay (the fragments') use Bullet's multi-point convex contacts (3 perturbation
 //     iterations) so that a resting fragment starts with a full manifold instead of sinking and
 //     tipping on a single point; existing pairs are not affected.
+// Fragments take the parent's continuous collision settings scaled by their size; fragments of a
+// parent without them get continuous collision once they move more than half their size (cube
+// root of the volume) in a step, with a swept sphere of a fifth of it: small fast chips would
+// otherwise pass through the ground.
 // With fracture disabled, no engine, or no btFractureRigidBody added, a step is Bullet's step.
+//
+// Penetration recovery: fragments can start overlapping their neighbours where their convex
+// collision pieces could not be cut apart or pushed far enough (FragmentSeparation.h). Bullet's
+// default turns penetrations shallower than btContactSolverInfo::m_splitImpulsePenetrationThreshold
+// (4 cm) into velocity (Baumgarte), which launches fragments. So while the world holds fragments
+// (and in every replayed step) each step runs with split impulse (position recovery without
+// velocity) for penetrations deeper than splitImpulseDepth() (0.5 mm; resting contacts, which are
+// shallower, keep Bullet's Baumgarte); the app's solver info is restored after the step.
+//
+// Energy audit: every event's FractureEnergyAudit (FractureEnergy.h) follows the breaking body's
+// kinetic energy through the swap, the separation push and the replayed step, and the world's
+// mechanical energy over energyAuditSteps() steps after it; listeners get it when it completes.
 //
 // Internal tick callbacks: on a step that fractures, Bullet's pre/post tick callbacks run for the
 // discarded step and again for the replay; isReplayingStep() tells them apart.
@@ -82,6 +98,19 @@ public:
     void resetFractureStatistics() { stats_ = FractureStatistics{}; }
 
     bool isReplayingStep() const { return replaying_; }
+
+    // `enabled` false keeps Bullet's threshold; `depth` [m] > 0.
+    void setSplitImpulseForFragments(bool enabled, double depth = 0.0005);
+    bool splitImpulseForFragments() const { return splitImpulseForFragments_; }
+    double splitImpulseDepth() const { return splitImpulseDepth_; }
+
+    // Steps after the replayed step over which an event's energy audit follows the world
+    // (default 20; 0: the audit ends with the replayed step).
+    void setEnergyAuditSteps(int steps);
+    int energyAuditSteps() const { return energyAuditSteps_; }
+    // Completes every open energy audit now (listeners hear them): call before reading results
+    // at the end of a run.
+    void finishEnergyAudits();
     // True while `object` is a fragment the world created and still holds.
     bool ownsBody(const btCollisionObject* object) const;
 
@@ -97,11 +126,14 @@ protected:
 
 private:
     struct Event;
+    struct OpenAudit;
     void noteAdded(btRigidBody* body);
     void collectTriggeredBodies();
     bool buildContacts(btFractureRigidBody& body, std::vector<BodyContact>& contacts) const;
     void runFractureEvents(btScalar timeStep);
     std::vector<btFractureRigidBody*> spawnFragments(btFractureRigidBody& parent, FractureOutcome& outcome);
+    void stepWithFracture(btScalar timeStep);
+    void followEnergyAudits(std::size_t count);
 
     std::unique_ptr<FractureEngine> engine_;
     bool enabled_ = true;
@@ -118,6 +150,10 @@ private:
     std::vector<btFractureRigidBody*> touched_;                // fracturable bodies with contacts this step
     std::vector<btFractureRigidBody*> triggered_;              // ... whose impulse sum reached the threshold
     std::vector<std::unique_ptr<btFractureRigidBody>> owned_;  // fragments in the world, creation order
+    bool splitImpulseForFragments_ = true;
+    double splitImpulseDepth_ = 0.0005;  // [m]
+    int energyAuditSteps_ = 20;
+    std::vector<OpenAudit> audits_;  // energy audits still following the world, in event order
 };
 
 }  // namespace btfracture

@@ -151,4 +151,10 @@ double btFractureRigidBody::meanCurvatureAt(const Eigen::Vector3d& bodyPoint) co
     return btfracture::meanCurvatureAt(mesh_, vertexCurvature_, bodyPoint);
 }
 
+void btFractureRigidBody::replaceConvexPieces(std::vector<ConvexPolytope> bodyFramePieces) {
+    if (isInWorld()) throw Error(name() + ": collision shape pieces can only be replaced outside a world");
+    shape_->replacePieces(std::move(bodyFramePieces));
+    setCollisionShape(shape_->shape());
+}
+
 }  // namespace btfracture

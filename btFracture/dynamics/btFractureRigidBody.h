@@ -90,6 +90,9 @@ public:
     double characteristicLength() const { return characteristicLength_; }  // cube root of the volume [m]
     const btTransform& bodyInModelFrame() const { return bodyInModelFrame_; }
     const CollisionShapeStorage& shapeStorage() const { return *shape_; }
+    // Rebuilds the collision shape from new convex pieces (CollisionShapeStorage::replacePieces),
+    // before the body enters a world (throws btfracture::Error naming the body otherwise).
+    void replaceConvexPieces(std::vector<ConvexPolytope> bodyFramePieces);
 
     // Mean curvature of the mesh at the surface point nearest to `bodyPoint` [1/m]
     // (ContactCurvature.h).

@@ -48,8 +48,25 @@ std::vector<std::string> FractureRecorder::record(FractureEventRecord record,
     ++events_;
     fractureSeconds_ += record.fractureSeconds;
     swapSeconds_ += record.swapSeconds;
-    if (csv_) csv_->add(record);
-    return record.fragments;
+    std::vector<std::string> names = record.fragments;
+    if (csv_) pending_.push_back(std::move(record));
+    return names;
+}
+
+void FractureRecorder::addEnergyAudit(const FractureEnergyAudit& audit) {
+    for (FractureEventRecord& row : pending_)
+        if (row.worldEvent == audit.event) {
+            row.hasEnergy = true;
+            row.energy = audit;
+        }
+    writeAudited();
+}
+
+void FractureRecorder::writeAudited() {
+    while (!pending_.empty() && pending_.front().hasEnergy) {
+        csv_->add(pending_.front());
+        pending_.pop_front();
+    }
 }
 
 std::vector<FractureRecorder::Fragment> FractureRecorder::fragments() const {
@@ -89,7 +106,10 @@ bool FractureRecorder::writeFragmentVolumes(const std::string& prefix, const std
 }
 
 void FractureRecorder::close() {
-    if (csv_) csv_->close();
+    if (!csv_) return;
+    for (const FractureEventRecord& row : pending_) csv_->add(row);
+    pending_.clear();
+    csv_->close();
 }
 
 }  // namespace btfracture

@@ -7,6 +7,7 @@
 // fragments are named or where the statistics go.
 #include <btFracture/io/StatisticsCsv.h>
 
+#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
@@ -26,9 +27,12 @@ public:
     // One fracture event: `record.body` (an original or an earlier fragment) broke into pieces of
     // `fragmentVolumes` [m^3]. Names the pieces "<original>_f<k>", k counting from 1 per original
     // body in creation order (so names are stable from frame to frame and run to run), fills
-    // record.fragments with them, writes the CSV row and returns the names. Throws
-    // btfracture::Error for an unknown body or a non-positive volume.
+    // record.fragments with them and returns the names. The CSV row is written once the event's
+    // energy audit arrived (addEnergyAudit), rows in event order. Throws btfracture::Error for an
+    // unknown body or a non-positive volume.
     std::vector<std::string> record(FractureEventRecord record, const std::vector<double>& fragmentVolumes);
+    // The energy audit of the recorded event with worldEvent == audit.event (others are ignored).
+    void addEnergyAudit(const FractureEnergyAudit& audit);
 
     struct Fragment {
         std::string name, original;
@@ -49,7 +53,8 @@ public:
     // there are no fragments.
     bool writeFragmentVolumes(const std::string& prefix, const std::string& fragmentsCsv, bool png) const;
 
-    // Closes the statistics CSV (throws Error naming the path when writing failed).
+    // Writes the rows still waiting for their audits (energy columns empty) and closes the
+    // statistics CSV (throws Error naming the path when writing failed).
     void close();
 
 private:
@@ -60,7 +65,10 @@ private:
         bool broken = false;
         size_t order = 0;  // creation order
     };
+    void writeAudited();  // the leading pending rows that have their energy audit
+
     std::unique_ptr<StatisticsCsv> csv_;
+    std::deque<FractureEventRecord> pending_;  // rows waiting for their audit, event order
     std::map<std::string, Piece> pieces_;      // originals and fragments by name
     std::map<std::string, double> originals_;  // original volumes
     std::map<std::string, int> nextIndex_;     // per original: k of its next fragment

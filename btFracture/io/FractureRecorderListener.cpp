@@ -23,6 +23,7 @@ void FractureRecorderListener::onFractureEvent(btFractureRigidBody& parent,
         throw Error("FractureRecorderListener: body '" + parent.name() +
                     "' broke but was never added with addOriginal");
     FractureEventRecord record;
+    record.worldEvent = info.event;
     record.step = info.step;
     record.time = static_cast<double>(info.step) * stepLength_;
     record.body = found->second;
@@ -39,6 +40,10 @@ void FractureRecorderListener::onFractureEvent(btFractureRigidBody& parent,
     const std::vector<std::string> names = recorder_.record(record, volumes);
     names_.erase(found);  // the parent leaves the world; its address may be reused
     for (size_t k = 0; k < fragments.size(); ++k) names_[fragments[k]] = names[k];
+}
+
+void FractureRecorderListener::onFractureEnergyAudit(const FractureEnergyAudit& audit) {
+    recorder_.addEnergyAudit(audit);
 }
 
 std::string FractureRecorderListener::nameOf(const btCollisionObject* body) const {

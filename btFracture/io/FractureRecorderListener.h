@@ -28,6 +28,7 @@ public:
     // method is the body's method setting; bemTriangles its BEM target.
     void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
                          const FractureEventInfo& info) override;
+    void onFractureEnergyAudit(const FractureEnergyAudit& audit) override;
 
     // The output name of a body added with addOriginal or created by fracture; empty for others.
     std::string nameOf(const btCollisionObject* body) const;

@@ -22,4 +22,8 @@ void SceneFractureListener::onFractureEvent(btFractureRigidBody& parent,
     world_.replaceBody(parent, named);
 }
 
+void SceneFractureListener::onFractureEnergyAudit(const FractureEnergyAudit& audit) {
+    recorder_.onFractureEnergyAudit(audit);
+}
+
 }  // namespace btfracture

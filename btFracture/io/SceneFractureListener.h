@@ -15,6 +15,7 @@ public:
     SceneFractureListener(FractureRecorderListener& recorder, SceneWorld& world);
     void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
                          const FractureEventInfo& info) override;
+    void onFractureEnergyAudit(const FractureEnergyAudit& audit) override;
 
 private:
     FractureRecorderListener& recorder_;

@@ -2,6 +2,7 @@
 // The statistics CSV: one row per fracture event. The fracture world's listener
 // (io/FractureRecorderListener.h) fills a FractureEventRecord per event and hands it to
 // FractureRecorder (io/FractureRecorder.h), which names the fragments and calls StatisticsCsv::add.
+#include <btFracture/dynamics/FractureEnergy.h>
 #include <btFracture/io/SceneFile.h>
 
 #include <cstdint>
@@ -12,7 +13,8 @@
 namespace btfracture {
 
 struct FractureEventRecord {
-    std::uint64_t step = 0;  // the world's internal Bullet step at the event
+    std::uint64_t worldEvent = 0;  // the world's event counter (FractureEventInfo::event)
+    std::uint64_t step = 0;        // the world's internal Bullet step at the event
     double time = 0.0;       // simulated time at the start of that step [s]
     std::string body;        // the body that broke
     int contacts = 0;        // contacts that loaded it
@@ -27,13 +29,23 @@ struct FractureEventRecord {
     std::vector<std::string> fragments;  // names of the bodies that replaced it
     double fractureSeconds = 0.0;        // wall time in the fracture solver [s]
     double swapSeconds = 0.0;            // wall time restoring, swapping bodies and replaying the step [s]
+    // The event's energy audit (dynamics/FractureEnergy.h); its columns stay empty without one.
+    bool hasEnergy = false;
+    FractureEnergyAudit energy;
 };
 
 class StatisticsCsv {
 public:
     // Creates (truncates) `path` and writes the header line:
     //   event,step,time_s,body,contacts,impulse_Ns,contact_duration_s,method,bem_triangles,
-    //   crack_triangles,fragments,fragment_names,fracture_wall_s,swap_wall_s
+    //   crack_triangles,fragments,fragment_names,fracture_wall_s,swap_wall_s,
+    //   ke_body_J,ke_partners_J,ke_swap_J,ke_separated_J,pe_gain_swap_J,pe_gain_separated_J,
+    //   ke_replay_J,ke_following_max_J,
+    //   following_steps,world_energy_before_J,world_energy_gain_J,energy_added_fraction
+    // The energy columns are FractureEnergyAudit's fields (kinetic energies of the breaking body,
+    // the bodies touching it, its fragments at each stage; the fragments' potential energy above
+    // the body's; the largest rise of the world's mechanical energy and that rise over
+    // ke_body_J + ke_partners_J).
     // fragment_names is space-separated. Fields with a comma, quote or line break are quoted
     // (RFC 4180). Numbers use 9 significant digits; every column except the two *_wall_s ones is
     // the same in every run of the same scene. Throws btfracture::Error naming the path when the

@@ -470,6 +470,7 @@ int run(const Options& options) {
     if (!thumbnails.empty())
         writePng((dir / "contact_sheet.png").string(),
                  contactSheet(thumbnails, thumbnailLabels, 4, thumbnailWidth));
+    if (fractureWorld) fractureWorld->finishEnergyAudits();
     recorder.close();
     const bool histogram =
         formats.csv && recorder.writeFragmentVolumes((dir / "fragment_volumes").string(),

@@ -228,6 +228,52 @@ TEST(FractureWorld, SwapConservesMassMomentumAndDoesNotPop) {
     }
 }
 
+// The energy audit of an event: the swap keeps the kinetic energy (the plane split's halves sum
+// exactly to the slab's mass and inertia), and neither the replayed step nor the 20 after it raise
+// the world's mechanical energy; the audit follows exactly energyAuditSteps() steps.
+TEST(FractureWorld, EnergyAuditFollowsTheEvent) {
+    struct AuditProbe : FractureListener {
+        void onFractureEvent(btFractureRigidBody&, const std::vector<btFractureRigidBody*>&,
+                             const FractureEventInfo& info) override {
+            events.push_back(info.event);
+        }
+        void onFractureEnergyAudit(const FractureEnergyAudit& a) override { audits.push_back(a); }
+        std::vector<std::uint64_t> events;
+        std::vector<FractureEnergyAudit> audits;
+    };
+    SceneOptions options;
+    options.freeFlight = true;
+    options.slabVelocity = Eigen::Vector3d(0.3, 0.5, -0.2);
+    options.slabAngularVelocity = Eigen::Vector3d(0.4, 2.0, -0.7);
+    Scene scene(options);
+    AuditProbe listener;
+    scene.world->addFractureListener(&listener);
+    EXPECT_EQ(scene.world->energyAuditSteps(), 20);
+    int steps = 0;
+    for (; steps < 10 && listener.events.empty(); ++steps) scene.step();
+    ASSERT_EQ(listener.events.size(), 1u);
+    EXPECT_TRUE(listener.audits.empty());  // still following
+    scene.step(19);
+    EXPECT_TRUE(listener.audits.empty());
+    scene.step();
+    ASSERT_EQ(listener.audits.size(), 1u);
+    const FractureEnergyAudit& a = listener.audits.front();
+    EXPECT_EQ(a.event, listener.events.front());
+    EXPECT_EQ(a.followingSteps, 20);
+    EXPECT_GT(a.bodyKinetic, 0.0);
+    EXPECT_GT(a.partnersKinetic, a.bodyKinetic);  // the ball
+    EXPECT_NEAR(a.swapKinetic, a.bodyKinetic, 1e-6 * a.bodyKinetic);
+    EXPECT_NEAR(a.separatedKinetic, a.swapKinetic, 1e-3 * a.swapKinetic);
+    EXPECT_LE(a.addedFraction(), 0.01) << "world energy gain " << a.worldGain << " J";
+    std::printf("audit: body %.4g J, partners %.4g J, swap %.4g, separated %.4g, replay %.4g, following max "
+                "%.4g J; world gain %.3g J (%.2g)\n",
+                a.bodyKinetic, a.partnersKinetic, a.swapKinetic, a.separatedKinetic, a.replayKinetic,
+                a.followingKinetic, a.worldGain, a.addedFraction());
+    scene.world->finishEnergyAudits();  // nothing open: nothing more
+    EXPECT_EQ(listener.audits.size(), 1u);
+    scene.world->removeFractureListener(&listener);
+}
+
 TEST(FractureWorld, SameSceneTwiceGivesBitIdenticalFragments) {
     auto run = [] {
         Scene scene;

@@ -149,6 +149,18 @@ TEST(StatisticsCsv, RowsColumnsAndQuoting) {
         csv.add(r);
         r.body = "odd, \"name\"";
         r.fragments = {};
+        r.hasEnergy = true;
+        r.energy.bodyKinetic = 2.0;
+        r.energy.partnersKinetic = 6.0;
+        r.energy.swapKinetic = 2.0;
+        r.energy.separatedKinetic = 1.5;
+        r.energy.swapPotentialGain = 0.25;
+        r.energy.separatedPotentialGain = 0.5;
+        r.energy.replayKinetic = 3.0;
+        r.energy.followingKinetic = 3.25;
+        r.energy.followingSteps = 20;
+        r.energy.worldBefore = 100.0;
+        r.energy.worldGain = -0.5;
         csv.add(r);
         EXPECT_EQ(csv.rows(), 2);
         csv.close();
@@ -158,10 +170,46 @@ TEST(StatisticsCsv, RowsColumnsAndQuoting) {
     EXPECT_EQ(
         lines[0],
         "event,step,time_s,body,contacts,impulse_Ns,contact_duration_s,method,bem_triangles,crack_triangles,"
-        "fragments,fragment_names,fracture_wall_s,swap_wall_s");
-    EXPECT_EQ(lines[1], "1,120,0.48,bunny,3,12.5,0.00025,est,800,212,2,bunny_f1 bunny_f2,1.25,0.01");
-    EXPECT_EQ(lines[2], "2,120,0.48,\"odd, \"\"name\"\"\",3,12.5,0.00025,est,800,212,0,,1.25,0.01");
+        "fragments,fragment_names,fracture_wall_s,swap_wall_s,ke_body_J,ke_partners_J,ke_swap_J,ke_separated_J,"
+        "pe_gain_swap_J,pe_gain_separated_J,ke_replay_J,ke_following_max_J,following_steps,world_energy_before_J,world_energy_gain_J,"
+        "energy_added_fraction");
+    EXPECT_EQ(lines[1], "1,120,0.48,bunny,3,12.5,0.00025,est,800,212,2,bunny_f1 bunny_f2,1.25,0.01,,,,,,,,,,,,");
+    EXPECT_EQ(lines[2],
+              "2,120,0.48,\"odd, \"\"name\"\"\",3,12.5,0.00025,est,800,212,0,,1.25,0.01,2,6,2,1.5,0.25,0.5,3,3.25,20,100,-0.5,"
+              "-0.0625");
     EXPECT_THROW(StatisticsCsv("/no/such/folder/s.csv"), Error);
+}
+
+// A statistics row waits for its event's energy audit; rows keep the event order whatever order
+// the audits arrive in.
+TEST(FractureRecorder, RowsWaitForTheirEnergyAuditInEventOrder) {
+    const auto csv = scratch("recorder_audits.csv");
+    FractureRecorder recorder(csv.string());
+    recorder.addOriginal("a", 1.0);
+    recorder.addOriginal("b", 1.0);
+    FractureEventRecord event;
+    event.worldEvent = 7;
+    event.body = "a";
+    recorder.record(event, {0.5, 0.5});
+    event.worldEvent = 8;
+    event.body = "b";
+    recorder.record(event, {0.25, 0.75});
+    FractureEnergyAudit audit;
+    audit.event = 8;
+    audit.bodyKinetic = 4.0;
+    recorder.addEnergyAudit(audit);
+    EXPECT_EQ(linesOf(csv).size(), 1u);  // event 7 still waits, and 8 behind it
+    audit.event = 7;
+    audit.bodyKinetic = 2.0;
+    recorder.addEnergyAudit(audit);
+    const auto lines = linesOf(csv);
+    ASSERT_EQ(lines.size(), 3u);
+    EXPECT_EQ(lines[1].substr(0, 4), "1,0,");
+    EXPECT_NE(lines[1].find(",a,"), std::string::npos);
+    EXPECT_NE(lines[1].find(",2,0,0,0,0,0,"), std::string::npos) << lines[1];
+    EXPECT_NE(lines[2].find(",b,"), std::string::npos);
+    EXPECT_NE(lines[2].find(",4,0,0,0,0,0,"), std::string::npos) << lines[2];
+    recorder.close();
 }
 
 // Fragments are named <original>_f<k> in creation order, per original; a fragment that breaks
@@ -209,7 +257,7 @@ TEST(FractureRecorder, NamesAndVolumeBookkeeping) {
     EXPECT_EQ(linesOf(scratch("fragments.csv"))[5], "bunny_f4,bunny,2,0.5,0.25");
     EXPECT_EQ(readPng(prefix.string() + ".png").width(), 960);
     recorder.close();
-    EXPECT_EQ(linesOf(csv).size(), 4u);
+    EXPECT_EQ(linesOf(csv).size(), 4u);  // rows without an energy audit are written at close
 
     FractureRecorder none;
     none.addOriginal("pane", 1.0);

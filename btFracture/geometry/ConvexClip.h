@@ -1,0 +1,23 @@
+#pragma once
+// A convex polytope (geometry/ConvexPenetration.h: the hull of its points inflated by its margin)
+// cut by a plane: the part on the side n.x <= offset.
+#include <btFracture/geometry/ConvexPenetration.h>
+
+#include <Eigen/Core>
+
+namespace btfracture {
+
+// The cut hull is the hull of the points with n.x <= offset - margin and of the points where the
+// segments between those and the others cross that plane (every vertex of the cut hull is a kept
+// point or a hull edge's crossing); its corners are returned. The margin is kept, so the result's
+// surface reaches at most to the plane n.x = offset. `normal` must be a unit vector. No points
+// when what is left is flat or empty.
+ConvexPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::Vector3d& normal, double offset);
+
+// Volume of the hull of the polytope's points (margin not included) [m^3]; 0 when flat.
+double hullVolume(const ConvexPolytope& polytope);
+
+// Extent of the polytope along the unit vector `direction`, margin included: [lowest, highest].
+Eigen::Vector2d extentAlong(const ConvexPolytope& polytope, const Eigen::Vector3d& direction);
+
+}  // namespace btfracture
