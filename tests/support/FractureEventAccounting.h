@@ -7,7 +7,8 @@
 //    sum m_i v_i = m v + w x sum m_i (c_i - c) (m: fragment mass), up to what the separation push
 //    explains (it moves centres, not velocities: |w| m push). Reported relative to
 //    M (|v| + |w| L), L the cube root of the parent's volume;
-//  - the fragment volumes (for determinism checks).
+//  - the fragment volumes (for determinism checks);
+//  - the event's energy audit when the world completes it (dynamics/FractureEnergy.h).
 // Register it before listeners that delete or rename the parent.
 #include <btFracture/dynamics/FractureListener.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
@@ -34,6 +35,9 @@ struct FractureEventCheck {
     std::vector<double> volumes;  // fragment volumes [m^3], in spawn order
     double engineSeconds = 0.0;   // the fracture engine's time for this event [s]
     EngineTimings engineTimings;  // ... split into BEM, fracture and geometry
+    std::uint64_t worldEvent = 0;  // FractureEventInfo::event
+    bool hasEnergy = false;        // the audit arrived
+    FractureEnergyAudit energy;
 };
 
 class FractureEventAccounting : public FractureListener {
@@ -53,6 +57,7 @@ public:
         e.refractureDepth = parent.settings().refractureDepth;
         e.engineSeconds = info.engineSeconds;
         e.engineTimings = info.engineTimings;
+        e.worldEvent = info.event;
         const double M = 1.0 / parent.getInvMass();
         const Eigen::Vector3d c = eig(parent.getCenterOfMassPosition()), v = eig(parent.getLinearVelocity()),
                               w = eig(parent.getAngularVelocity());
@@ -74,6 +79,14 @@ public:
         e.massRatio = mass / M;
         e.volumeRatio = volume / parent.volume();
         events.push_back(std::move(e));
+    }
+
+    void onFractureEnergyAudit(const FractureEnergyAudit& audit) override {
+        for (FractureEventCheck& e : events)
+            if (e.worldEvent == audit.event) {
+                e.hasEnergy = true;
+                e.energy = audit;
+            }
     }
 
     std::vector<FractureEventCheck> events;
