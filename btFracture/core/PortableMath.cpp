@@ -93,7 +93,7 @@ void split(double a, double& hi, double& lo) {
 }
 
 // a b = p.hi + p.lo exactly (|a|, |b| < 2^995, no underflow).
-DD twoProd(double a, double b) {
+inline DD twoProd(double a, double b) {
     double ah, al, bh, bl;
     split(a, ah, al);
     split(b, bh, bl);
@@ -101,19 +101,19 @@ DD twoProd(double a, double b) {
     return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
 }
 
-DD add(DD a, DD b) {
+inline DD add(DD a, DD b) {
     const DD s = twoSum(a.hi, b.hi);
     return fastTwoSum(s.hi, s.lo + (a.lo + b.lo));
 }
 
-DD mul(DD a, DD b) {
-    const DD p = twoProd(a.hi, b.hi);
-    return fastTwoSum(p.hi, p.lo + (a.hi * b.lo + a.lo * b.hi));
+inline DD add(DD a, double b) {
+    const DD s = twoSum(a.hi, b);
+    return fastTwoSum(s.hi, s.lo + a.lo);
 }
 
-DD mul(DD a, double b) {
-    const DD p = twoProd(a.hi, b);
-    return fastTwoSum(p.hi, p.lo + a.lo * b);
+inline DD mul(DD a, DD b) {
+    const DD p = twoProd(a.hi, b.hi);
+    return fastTwoSum(p.hi, p.lo + (a.hi * b.lo + a.lo * b.hi));
 }
 
 // ---- Constants (values to the bit; hexadecimal where the split matters) --------------------------
@@ -252,30 +252,36 @@ double expDD(double h, double l) {
     return scaleByTwoTo(one.hi + (one.lo + (corr - lo)), static_cast<int>(k));
 }
 
-// log(x) in double-double, relative error about 2^-70; x positive, finite, non-zero. With
-// x = m 2^k and s = (m - 1) / (m + 1), |s| <= 0.1716, log(m) = 2 atanh(s) =
-// 2 s + s z (2/3 + 2/5 z + 2/7 z^2 + ...), z = s^2 <= 0.0295 (Taylor to z^12: the first omitted
-// term is below 2^-70 of the sum). The terms 2/3 and 2/5 z need double-double coefficients.
+// log(x) in double-double, relative error below 2^-69; x positive, finite, non-zero. With
+// x = m 2^k, m = c (1 + g) for the nearest of the centres c = 3/4, 1, 5/4, and
+// s = (m - c) / (m + c), |s| <= 0.0718: log(m) = log(c) + 2 atanh(s) =
+// log(c) + 2 s + 2/3 s^3 + s^5 (2/5 + 2/7 z + ... + 2/17 z^6), z = s^2 <= 0.00516 (Taylor: the
+// first omitted term is below 2^-70 of the sum). 2 s and 2/3 s^3 are double-doubles; the rest,
+// below 2^-17 of the sum, is a double.
 DD logDD(double x) {
     int k;
     const double m = splitExponent(x, k);
-    const double f = m - 1.0;  // exact
-    const DD d = fastTwoSum(2.0, f);
-    const double sh = f / d.hi;
+    constexpr double kCentre[] = {0.75, 1.0, 1.25};
+    constexpr DD kLogCentre[] = {{-0x1.269621134db92p-2, -0x1.e0efadd9db02bp-56},
+                                 {0.0, 0.0},
+                                 {0x1.c8ff7c79a9a22p-3, -0x1.4f689f8434012p-57}};
+    const int i = m < 0x1.bb67ae8584caap-1 ? 0 : m > 0x1.1e3779b97f4a8p+0 ? 2 : 1;  // sqrt(3/4), sqrt(5/4)
+    const double f = m - kCentre[i];                                                // exact (Sterbenz)
+    const DD d = twoSum(m, kCentre[i]);
+    const double inverse = 1.0 / d.hi;
+    const double sh = f * inverse;
     const DD p = twoProd(sh, d.hi);
-    const double sl = (((f - p.hi) - p.lo) - sh * d.lo) / d.hi;
+    const double sl = (((f - p.hi) - p.lo) - sh * d.lo) * inverse;  // f / d - sh
     const DD s = fastTwoSum(sh, sl);
-    const DD z = mul(s, s);
-    constexpr double kTail[] = {2.0 / 7,  2.0 / 9,  2.0 / 11, 2.0 / 13, 2.0 / 15, 2.0 / 17,
-                                2.0 / 19, 2.0 / 21, 2.0 / 23, 2.0 / 25, 2.0 / 27};
-    double tail = 0.0;
-    for (int i = 10; i >= 0; --i) tail = kTail[i] + z.hi * tail;
-    constexpr DD kTwoFifths{0x1.999999999999ap-2, -0x1.999999999999ap-56};
+    const DD z = mul(s, s), s3 = mul(s, z);
+    const double w = z.hi;
+    const double tail =
+        2.0 / 5 +
+        w * (2.0 / 7 + w * (2.0 / 9 + w * (2.0 / 11 + w * (2.0 / 13 + w * (2.0 / 15 + w * (2.0 / 17))))));
     constexpr DD kTwoThirds{0x1.5555555555555p-1, 0x1.5555555555555p-55};
-    const DD q = add(kTwoThirds, mul(z, add(kTwoFifths, mul(z, tail))));
-    const DD log1p = add({2.0 * s.hi, 2.0 * s.lo}, mul(s, mul(z, q)));
+    const DD atanh2 = add(add({2.0 * s.hi, 2.0 * s.lo}, mul(s3, kTwoThirds)), s3.hi * w * tail);
     const double dk = k;
-    return add(fastTwoSum(dk * kLn2Hi, dk * kLn2Lo), log1p);
+    return add(add(fastTwoSum(dk * kLn2Hi, dk * kLn2Lo), kLogCentre[i]), atanh2);
 }
 
 }  // namespace
