@@ -93,33 +93,16 @@ void expectClose(const char* name, const Accuracy& a, double maxUlps = 1.0, doub
     EXPECT_LE(a.sumRelative / a.count, maxMeanRelative) << a.describe();
 }
 
-double stdSin(double x) {
-    return std::sin(x);
-}
-double stdCos(double x) {
-    return std::cos(x);
-}
-double stdTan(double x) {
-    return std::tan(x);
-}
-double stdAsin(double x) {
-    return std::asin(x);
-}
-double stdAcos(double x) {
-    return std::acos(x);
-}
-double stdAtan(double x) {
-    return std::atan(x);
-}
-double stdExp(double x) {
-    return std::exp(x);
-}
-double stdLog(double x) {
-    return std::log(x);
-}
-double stdLog10(double x) {
-    return std::log10(x);
-}
+// glibc's functions as plain function pointers (the std:: names are overloaded).
+constexpr double (*stdSin)(double) = [](double x) { return std::sin(x); };
+constexpr double (*stdCos)(double) = [](double x) { return std::cos(x); };
+constexpr double (*stdTan)(double) = [](double x) { return std::tan(x); };
+constexpr double (*stdAsin)(double) = [](double x) { return std::asin(x); };
+constexpr double (*stdAcos)(double) = [](double x) { return std::acos(x); };
+constexpr double (*stdAtan)(double) = [](double x) { return std::atan(x); };
+constexpr double (*stdExp)(double) = [](double x) { return std::exp(x); };
+constexpr double (*stdLog)(double) = [](double x) { return std::log(x); };
+constexpr double (*stdLog10)(double) = [](double x) { return std::log10(x); };
 
 // The CPU-dependent functions over a sweep, hashed (FNV-1a over the result bits): one hash for
 // pmath and one for glibc.
