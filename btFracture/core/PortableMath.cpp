@@ -233,7 +233,7 @@ constexpr double kAtanLo[] = {0x1.a2b7f222f65e2p-56, 0x1.1a62633145c07p-55, 0x1.
 constexpr double kExpOverflow = 7.09782712893383973096e+02;    // exp(x) > DBL_MAX above
 constexpr double kExpUnderflow = -7.45133219101941108420e+02;  // exp(x) rounds to 0 below
 
-// exp(h + l) for |l| <= ulp(h): fdlibm's e_exp.c. With x = k ln2 + r, |r| <= ln2/2, and
+// exp(h + l) for |l| <= ulp(h): fdlibm's e_exp.c. With h + l = k ln2 + r, |r| <= ln2/2, and
 // c = r - r^2 (P1 + P2 r^2 + ... + P5 r^8) (minimax, error below 2^-59),
 // exp(r) = 1 + r + r c / (2 - c); r is carried as hi - lo, and 1 + hi as a double-double.
 double expDD(double h, double l) {
@@ -253,7 +253,7 @@ double expDD(double h, double l) {
 }
 
 // log(x) in double-double, relative error below 2^-69; x positive, finite, non-zero. With
-// x = m 2^k, m = c (1 + g) for the nearest of the centres c = 3/4, 1, 5/4, and
+// x = m 2^k, c the centre nearest m of 3/4, 1 and 5/4, and
 // s = (m - c) / (m + c), |s| <= 0.0718: log(m) = log(c) + 2 atanh(s) =
 // log(c) + 2 s + 2/3 s^3 + s^5 (2/5 + 2/7 z + ... + 2/17 z^6), z = s^2 <= 0.00516 (Taylor: the
 // first omitted term is below 2^-70 of the sum). 2 s and 2/3 s^3 are double-doubles; the rest,
