@@ -5,6 +5,7 @@
 // Then the voxel-resolution crack front (issue 5) on the same bunny: a seed in the same plane
 // grown by markers until they all stop at the surface, and the cut of the surface they swept.
 #include <btFracture/core/MassProperties.h>
+#include <btFracture/core/PortableMath.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/fracture/CrackFront.h>
 #include <btFracture/geometry/LevelSetBody.h>
@@ -85,7 +86,7 @@ int main() {
     CoarseFront coarse;
     for (int k = 0; k < 6; ++k) {
         const double a = 2.0 * 3.14159265358979 * k / 6;
-        const Eigen::Vector3d radial = std::cos(a) * u.normalized() + std::sin(a) * w.normalized();
+        const Eigen::Vector3d radial = pmath::cos(a) * u.normalized() + pmath::sin(a) * w.normalized();
         coarse.position[k] = c + 2.0 * voxel * radial;
         coarse.advance[k] = 4.0 * voxel * radial;
         coarse.edges.emplace_back(k, (k + 1) % 6);

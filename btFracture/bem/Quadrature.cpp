@@ -1,6 +1,7 @@
 #include <btFracture/bem/Quadrature.h>
 
 #include <btFracture/core/Error.h>
+#include <btFracture/core/PortableMath.h>
 
 #include <array>
 #include <cmath>
@@ -18,7 +19,7 @@ LineRule makeGaussLegendre(int n) {
     rule.points.resize(n);
     rule.weights.resize(n);
     for (int i = 0; i < n; ++i) {
-        double x = std::cos(M_PI * (i + 0.75) / (n + 0.5));
+        double x = pmath::cos(M_PI * (i + 0.75) / (n + 0.5));
         double dp = 1.0;
         for (int iter = 0; iter < 100; ++iter) {
             double p0 = 1.0, p1 = x;

@@ -1,5 +1,7 @@
 #include <btFracture/core/Intersection.h>
 
+#include <btFracture/core/PortableMath.h>
+
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -14,7 +16,7 @@ double windingNumber(const std::vector<Eigen::Vector3d>& vertices,
         const double la = a.norm(), lb = b.norm(), lc = c.norm();
         const double det = a.dot(b.cross(c));
         const double den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
-        sum += 2.0 * std::atan2(det, den);
+        sum += 2.0 * pmath::atan2(det, den);
     }
     return sum / (4.0 * M_PI);
 }

@@ -1,6 +1,7 @@
 #include <btFracture/core/Primitives.h>
 
 #include <btFracture/core/Error.h>
+#include <btFracture/core/PortableMath.h>
 
 #include <algorithm>
 #include <cmath>
@@ -108,8 +109,8 @@ TriangleMesh makeTorus(double R, double r, int major, int minor) {
         const double u = 2.0 * M_PI * i / major;
         for (int j = 0; j < minor; ++j) {
             const double v = 2.0 * M_PI * j / minor;
-            m.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
-                                    r * std::sin(v));
+            m.vertices.emplace_back((R + r * pmath::cos(v)) * pmath::cos(u),
+                                    (R + r * pmath::cos(v)) * pmath::sin(u), r * pmath::sin(v));
         }
     }
     auto id = [&](int i, int j) { return (i % major) * minor + (j % minor); };

@@ -1,5 +1,6 @@
 #include <btFracture/dynamics/ContactCurvature.h>
 
+#include <btFracture/core/PortableMath.h>
 #include <btFracture/dynamics/ClosestSurfacePoint.h>
 
 #include <BulletCollision/CollisionShapes/btCapsuleShape.h>
@@ -40,7 +41,7 @@ std::vector<double> vertexMeanCurvature(const TriangleMesh& mesh) {
         const Eigen::Vector3d& n2 = normals[twin->second];
         const Eigen::Vector3d e = mesh.vertices[edge.second] - mesh.vertices[edge.first];
         // Signed dihedral: positive when the surface turns away from its normal (convex edge).
-        const double theta = std::atan2(n1.cross(n2).dot(e.normalized()), n1.dot(n2));
+        const double theta = pmath::atan2(n1.cross(n2).dot(e.normalized()), n1.dot(n2));
         const double contribution = theta * e.norm() / 4.0;
         integrated[edge.first] += contribution;
         integrated[edge.second] += contribution;

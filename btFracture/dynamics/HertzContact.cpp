@@ -2,6 +2,7 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/PortableMath.h>
 
 #include <algorithm>
 #include <atomic>
@@ -15,7 +16,7 @@ namespace {
 // alpha* = (15 m* v^2 / (16 E* sqrt(R*)))^(2/5) give 2.9432 (15/16)^(2/5) = 2.8683 (FractureRB's
 // 2.868265699195); F_max = (4/3) E* sqrt(R*) alpha*^(3/2) gives (4/3) (15/16)^(3/5) = 1.2827.
 constexpr double kDurationConstant = 2.868265699195;
-const double kPeakForceConstant = 4.0 / 3.0 * std::pow(15.0 / 16.0, 0.6);
+const double kPeakForceConstant = 4.0 / 3.0 * pmath::pow(15.0 / 16.0, 0.6);
 
 std::atomic<bool> speedFloorLogged{false};
 std::atomic<bool> radiusCapLogged{false};
@@ -79,9 +80,9 @@ HertzImpact hertzImpact(const HertzBody& a, const HertzBody& b, double approachS
     }
 
     const double m = h.effectiveMass, E = h.effectiveModulus, R = h.effectiveRadius, v = h.approachSpeed;
-    h.contactDuration = kDurationConstant * std::pow(m * m / (E * E * R * v), 0.2);
-    h.peakForce =
-        kPeakForceConstant * std::pow(E, 0.4) * std::pow(R, 0.2) * std::pow(m, 0.6) * std::pow(v, 1.2);
+    h.contactDuration = kDurationConstant * pmath::pow(m * m / (E * E * R * v), 0.2);
+    h.peakForce = kPeakForceConstant * pmath::pow(E, 0.4) * pmath::pow(R, 0.2) * pmath::pow(m, 0.6) *
+                  pmath::pow(v, 1.2);
     return h;
 }
 

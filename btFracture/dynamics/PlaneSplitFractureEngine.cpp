@@ -3,6 +3,7 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
+#include <btFracture/core/PortableMath.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/TractionBalance.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
@@ -68,7 +69,7 @@ TriangleMesh half(const TriangleMesh& mesh, const std::vector<double>& distance,
     std::vector<std::pair<double, int>> ring;
     for (const auto& [edge, v] : cut) {
         const Eigen::Vector3d r = out.vertices[v] - centre;
-        ring.emplace_back(std::atan2(r.dot(w), r.dot(u)), v);
+        ring.emplace_back(pmath::atan2(r.dot(w), r.dot(u)), v);
     }
     std::sort(ring.begin(), ring.end());
     const int c = static_cast<int>(out.vertices.size());

@@ -1,6 +1,7 @@
 #include <btFracture/fracture/CrackSeed.h>
 
 #include <btFracture/core/Error.h>
+#include <btFracture/core/PortableMath.h>
 
 #include <Eigen/Geometry>
 
@@ -24,11 +25,11 @@ std::vector<int> addDiscCrack(CrackMesh& cracks, const Eigen::Vector3d& centre, 
             const int side = i / k;
             const double along = double(i % k) / k;
             const double a0 = rotation + side * M_PI / 3.0, a1 = a0 + M_PI / 3.0;
-            const Eigen::Vector2d hex = (1.0 - along) * Eigen::Vector2d(std::cos(a0), std::sin(a0)) +
-                                        along * Eigen::Vector2d(std::cos(a1), std::sin(a1));
-            const double angle = std::atan2(hex.y(), hex.x());
+            const Eigen::Vector2d hex = (1.0 - along) * Eigen::Vector2d(pmath::cos(a0), pmath::sin(a0)) +
+                                        along * Eigen::Vector2d(pmath::cos(a1), pmath::sin(a1));
+            const double angle = pmath::atan2(hex.y(), hex.x());
             const double r = radius * k / rings;
-            ring[k].push_back(cracks.addNode(centre + r * (std::cos(angle) * u + std::sin(angle) * v)));
+            ring[k].push_back(cracks.addNode(centre + r * (pmath::cos(angle) * u + pmath::sin(angle) * v)));
         }
     std::vector<int> added;
     for (int k = 1; k <= rings; ++k) {

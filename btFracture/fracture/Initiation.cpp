@@ -1,6 +1,7 @@
 #include <btFracture/fracture/Initiation.h>
 
 #include <btFracture/core/Log.h>
+#include <btFracture/core/PortableMath.h>
 #include <btFracture/fracture/CrackSeed.h>
 
 #include <Eigen/Eigenvalues>
@@ -70,7 +71,7 @@ int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<See
         inward.normalize();
         // Rotate the hexagon so that one vertex points at the surface point.
         const Eigen::Vector3d u = c.crackNormal.unitOrthogonal(), v = c.crackNormal.cross(u);
-        const double rotation = std::atan2((-inward).dot(v), (-inward).dot(u));
+        const double rotation = pmath::atan2((-inward).dot(v), (-inward).dot(u));
         // Near an edge or in a thin wall the full seed pokes out of the body: halve it (twice at
         // most) rather than lose the most loaded spot, which on a box's edge or a bowl's wall is
         // where glass breaks.

@@ -1,3 +1,4 @@
+#include <btFracture/core/PortableMath.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/fracture/CrackSeed.h>
 #include <btFracture/fracture/ReferenceCracks.h>
@@ -15,9 +16,9 @@ Eigen::VectorXd uniformStressTractions(const SurfaceMesh& mesh, const Eigen::Mat
 PennyCrackSifs pennyCrackSifs(double stress, double radius, double alpha, double poissonRatio) {
     // Kassir & Sih (validation.md (a)): K_I = 2/pi s sin^2(alpha) sqrt(pi a),
     // K_II = 4/(pi (2 - nu)) s sin cos cos(w) sqrt(pi a), K_III = (1 - nu) K_II amplitude sin(w).
-    const double root = std::sqrt(M_PI * radius), sc = std::sin(alpha) * std::cos(alpha);
+    const double root = std::sqrt(M_PI * radius), sc = pmath::sin(alpha) * pmath::cos(alpha);
     PennyCrackSifs k;
-    k.KI = 2.0 / M_PI * stress * std::sin(alpha) * std::sin(alpha) * root;
+    k.KI = 2.0 / M_PI * stress * pmath::sin(alpha) * pmath::sin(alpha) * root;
     k.KIIAmplitude = 4.0 / (M_PI * (2.0 - poissonRatio)) * stress * sc * root;
     k.KIIIAmplitude = (1.0 - poissonRatio) * k.KIIAmplitude;
     return k;

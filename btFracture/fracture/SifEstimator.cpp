@@ -1,5 +1,6 @@
 #include <btFracture/fracture/SifEstimator.h>
 
+#include <btFracture/core/PortableMath.h>
 #include <btFracture/fracture/PropagationLaw.h>
 
 #include <Eigen/Eigenvalues>
@@ -17,8 +18,8 @@ bool kinkTowards(const FrontFrame& f, const Eigen::Vector3d& v, double& theta) {
     const double inPlane = std::hypot(vm, vn);
     if (inPlane < 1e-9) return false;
     // New normal after kinking by theta: cos(theta) n - sin(theta) m.
-    theta = std::atan2(-vm, vn);
-    return std::cos(theta) >= 1.0 / 3.0;
+    theta = pmath::atan2(-vm, vn);
+    return pmath::cos(theta) >= 1.0 / 3.0;
 }
 
 }  // namespace
@@ -60,7 +61,7 @@ FrontSifs estimateSifs(const FrontFrame& frame, const Eigen::Matrix3d& stress, d
     FrontSifs f;
     f.frame = frame;
     const EstimatorChoice choice = chooseEigenvector(frame, stress, compressiveFactor);
-    const double scale = k * std::pow(M_PI * crackArea, 0.25);
+    const double scale = k * pmath::pow(M_PI * crackArea, 0.25);
     const double r = modeRatioForKink(choice.kink);
     const double magnitude =
         std::abs(choice.eigenvalue) * scale / (choice.compressive ? compressiveFactor : 1.0);

@@ -1,5 +1,7 @@
 #include <btFracture/fracture/SurfaceSlide.h>
 
+#include <btFracture/core/PortableMath.h>
+
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -8,7 +10,7 @@ namespace btfracture {
 namespace {
 
 const double kSlideMaxCosine = std::sqrt(0.5);
-const double kSlideMinCosine = std::cos(50.0 * M_PI / 180.0);
+const double kSlideMinCosine = pmath::cos(50.0 * M_PI / 180.0);
 
 }  // namespace
 

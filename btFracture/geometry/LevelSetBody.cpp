@@ -7,6 +7,7 @@
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
+#include <btFracture/core/PortableMath.h>
 #include <btFracture/geometry/MeshDecimation.h>
 #include <btFracture/geometry/internal/LevelSetGrids.h>
 
@@ -103,7 +104,7 @@ public:
                 const Eigen::Vector3d& p = mesh.vertices[t[k]];
                 const Eigen::Vector3d e1 = (mesh.vertices[t[(k + 1) % 3]] - p).normalized();
                 const Eigen::Vector3d e2 = (mesh.vertices[t[(k + 2) % 3]] - p).normalized();
-                vertexNormal_[t[k]] += std::acos(std::clamp(e1.dot(e2), -1.0, 1.0)) * n;
+                vertexNormal_[t[k]] += pmath::acos(std::clamp(e1.dot(e2), -1.0, 1.0)) * n;
                 edgeNormal_.try_emplace(edgeKey(t[k], t[(k + 1) % 3]), Eigen::Vector3d::Zero())
                     .first->second += n;
             }

@@ -1,6 +1,7 @@
 #include <btFracture/geometry/MeshQuality.h>
 
 #include <btFracture/core/Error.h>
+#include <btFracture/core/PortableMath.h>
 
 #include <Eigen/Geometry>
 
@@ -15,7 +16,7 @@ namespace {
 
 double cornerAngle(const Eigen::Vector3d& corner, const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
     const Eigen::Vector3d e1 = u - corner, e2 = v - corner;
-    return std::atan2(e1.cross(e2).norm(), e1.dot(e2));
+    return pmath::atan2(e1.cross(e2).norm(), e1.dot(e2));
 }
 
 }  // namespace

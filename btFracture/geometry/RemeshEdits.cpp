@@ -1,6 +1,7 @@
 #include <btFracture/geometry/RemeshEdits.h>
 
 #include <btFracture/core/ClosestPoint.h>
+#include <btFracture/core/PortableMath.h>
 #include <btFracture/geometry/MeshQuality.h>
 
 #include <Eigen/Geometry>
@@ -110,7 +111,7 @@ VertexMove optimizeVertexAngles(const HalfEdgeMesh& mesh, const ClosestPointTree
         for (int k = 0; k < directions; ++k) {
             const double phi = 2.0 * M_PI * k / directions;
             const Eigen::Vector3d trial = projectOntoSurface(
-                surface, move.position + h * (std::cos(phi) * t1 + std::sin(phi) * t2), normal);
+                surface, move.position + h * (pmath::cos(phi) * t1 + pmath::sin(phi) * t2), normal);
             ++evaluations;
             if (const double s = score(trial); s > move.minAngle + 1e-9) {
                 move.position = trial;

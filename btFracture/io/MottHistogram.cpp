@@ -1,6 +1,7 @@
 #include <btFracture/io/MottHistogram.h>
 
 #include <btFracture/core/Error.h>
+#include <btFracture/core/PortableMath.h>
 #include <btFracture/io/BitmapFont.h>
 
 #include <algorithm>
@@ -16,7 +17,7 @@ double mottSurvival(double volume, double meanVolume) {
                     std::to_string(meanVolume));
     if (volume <= 0.0) return 1.0;
     const double zeta = 6.0 / meanVolume;
-    return std::exp(-std::cbrt(zeta * volume));
+    return pmath::exp(-std::cbrt(zeta * volume));
 }
 
 MottComparison compareWithMott(std::vector<double> volumes, int binsPerDecade) {
@@ -39,13 +40,13 @@ MottComparison compareWithMott(std::vector<double> volumes, int binsPerDecade) {
         const double p = mottSurvival(volumes[i], c.mean);
         c.ksDistance = std::max({c.ksDistance, std::abs((n - i) / n - p), std::abs((n - i - 1) / n - p)});
     }
-    const int first = static_cast<int>(std::floor(std::log10(volumes.front()) * binsPerDecade));
-    const int last = static_cast<int>(std::floor(std::log10(volumes.back()) * binsPerDecade));
+    const int first = static_cast<int>(std::floor(pmath::log10(volumes.front()) * binsPerDecade));
+    const int last = static_cast<int>(std::floor(pmath::log10(volumes.back()) * binsPerDecade));
     size_t next = 0;
     for (int k = first; k <= last; ++k) {
         MottBin bin;
-        bin.lower = std::pow(10.0, static_cast<double>(k) / binsPerDecade);
-        bin.upper = std::pow(10.0, static_cast<double>(k + 1) / binsPerDecade);
+        bin.lower = pmath::pow(10.0, static_cast<double>(k) / binsPerDecade);
+        bin.upper = pmath::pow(10.0, static_cast<double>(k + 1) / binsPerDecade);
         // Bin edges from pow() may round differently from log10(): the last bin takes the rest.
         while (next < volumes.size() && (volumes[next] < bin.upper || k == last)) {
             ++bin.count;
@@ -122,7 +123,7 @@ void drawFrame(Image& image, const Panel& p, const std::string& yLabel, const st
 Image plotMott(const MottComparison& c, int width, int height) {
     if (c.volumes.empty() || c.bins.empty()) throw Error("plotMott: no fragments to plot");
     Image image(width, height, Rgb{255, 255, 255});
-    const double xMin = std::log10(c.bins.front().lower), xMax = std::log10(c.bins.back().upper);
+    const double xMin = pmath::log10(c.bins.front().lower), xMax = pmath::log10(c.bins.back().upper);
     const int panelWidth = (width - 3 * 60) / 2, panelHeight = height - 90;
     int maxCount = 1;
     double maxExpected = 0.0;
@@ -135,7 +136,7 @@ Image plotMott(const MottComparison& c, int width, int height) {
     const Panel histogram{60, 40, panelWidth, panelHeight, xMin, xMax, 0.0, countTop};
     drawFrame(image, histogram, "COUNT", "FRAGMENTS PER BIN");
     for (const MottBin& b : c.bins) {
-        const int x0 = histogram.px(std::log10(b.lower)) + 1, x1 = histogram.px(std::log10(b.upper)) - 1;
+        const int x0 = histogram.px(pmath::log10(b.lower)) + 1, x1 = histogram.px(pmath::log10(b.upper)) - 1;
         const int y = histogram.py(b.count);
         image.fillRect(x0, y, x1 - x0 + 1, histogram.py(0) - y, kBar);
         const int ye = histogram.py(b.expected);
@@ -145,9 +146,9 @@ Image plotMott(const MottComparison& c, int width, int height) {
     const Panel survival{2 * 60 + panelWidth, 40, panelWidth, panelHeight, xMin, xMax, 0.0, 1.0};
     drawFrame(image, survival, "P(>=V)", "SURVIVAL");
     // Mott's curve, sampled per pixel column.
-    int lastX = survival.left, lastY = survival.py(mottSurvival(std::pow(10.0, xMin), c.mean));
+    int lastX = survival.left, lastY = survival.py(mottSurvival(pmath::pow(10.0, xMin), c.mean));
     for (int x = survival.left + 1; x <= survival.left + survival.width; ++x) {
-        const double v = std::pow(10.0, xMin + (xMax - xMin) * (x - survival.left) / survival.width);
+        const double v = pmath::pow(10.0, xMin + (xMax - xMin) * (x - survival.left) / survival.width);
         const int y = survival.py(mottSurvival(v, c.mean));
         image.drawLine(lastX, lastY, x, y, kMott, 2);
         lastX = x;
@@ -157,7 +158,7 @@ Image plotMott(const MottComparison& c, int width, int height) {
     const double n = static_cast<double>(c.volumes.size());
     int x0 = survival.left, y0 = survival.py(1.0);
     for (size_t i = 0; i < c.volumes.size(); ++i) {
-        const int x = survival.px(std::log10(c.volumes[i]));
+        const int x = survival.px(pmath::log10(c.volumes[i]));
         image.drawLine(x0, y0, x, y0, kFragments, 2);
         const int y = survival.py((n - i - 1) / n);
         image.drawLine(x, y0, x, y, kFragments, 2);

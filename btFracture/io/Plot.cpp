@@ -1,3 +1,4 @@
+#include <btFracture/core/PortableMath.h>
 #include <btFracture/io/BitmapFont.h>
 #include <btFracture/io/Plot.h>
 
@@ -14,7 +15,7 @@ const Rgb kBlack{0, 0, 0}, kGrid{225, 225, 225}, kWhite{255, 255, 255};
 struct Scale {
     bool log = false;
     double lo = 0.0, hi = 1.0;  // data range (log10 of it on log axes)
-    double map(double v) const { return ((log ? std::log10(v) : v) - lo) / (hi - lo); }
+    double map(double v) const { return ((log ? pmath::log10(v) : v) - lo) / (hi - lo); }
     bool accepts(double v) const { return std::isfinite(v) && (!log || v > 0.0); }
 };
 
@@ -26,7 +27,7 @@ Scale makeScale(const std::vector<PlotSeries>& series, bool xAxis, bool log) {
         for (const auto& p : ps.xy) {
             const double v = xAxis ? p.first : p.second, other = xAxis ? p.second : p.first;
             if (!s.accepts(v) || !std::isfinite(other)) continue;
-            const double t = log ? std::log10(v) : v;
+            const double t = log ? pmath::log10(v) : v;
             lo = std::min(lo, t);
             hi = std::max(hi, t);
         }
@@ -51,10 +52,10 @@ std::vector<double> ticks(const Scale& s) {
     if (s.log) {
         const int step = std::max(1, static_cast<int>(std::ceil((s.hi - s.lo) / 8.0)));
         for (int e = static_cast<int>(s.lo); e <= static_cast<int>(s.hi); e += step)
-            out.push_back(std::pow(10.0, e));
+            out.push_back(pmath::pow(10.0, e));
         return out;
     }
-    const double raw = (s.hi - s.lo) / 6.0, mag = std::pow(10.0, std::floor(std::log10(raw)));
+    const double raw = (s.hi - s.lo) / 6.0, mag = pmath::pow(10.0, std::floor(pmath::log10(raw)));
     double step = mag;
     for (double m : {1.0, 2.0, 5.0, 10.0})
         if (m * mag >= raw) {

@@ -2,6 +2,7 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/PortableMath.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,7 @@ namespace {
 constexpr double kMargin = 1.05;               // framing margin around the bounding sphere
 constexpr double kPerspectiveFov = 0.6108652;  // 35 degrees
 constexpr double kAmbient = 0.25, kDiffuse = 0.75;
-const double kCreaseCosine = std::cos(M_PI / 4.0);  // Gouraud: faces within 45 degrees share normals
+const double kCreaseCosine = pmath::cos(M_PI / 4.0);  // Gouraud: faces within 45 degrees share normals
 
 Eigen::Vector3d unitColour(Rgb c) {
     return Eigen::Vector3d(c.r, c.g, c.b) / 255.0;
@@ -51,8 +52,8 @@ Camera Camera::framing(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& vi
     camera.right = camera.forward.cross(camera.up);
     if (projection == Projection::Perspective) {
         camera.verticalFov = kPerspectiveFov;
-        const double horizontalFov = 2.0 * std::atan(aspect * std::tan(0.5 * kPerspectiveFov));
-        const double distance = kMargin * radius / std::sin(0.5 * std::min(kPerspectiveFov, horizontalFov));
+        const double horizontalFov = 2.0 * pmath::atan(aspect * pmath::tan(0.5 * kPerspectiveFov));
+        const double distance = kMargin * radius / pmath::sin(0.5 * std::min(kPerspectiveFov, horizontalFov));
         camera.eye = centre + back * distance;
         camera.nearDistance = 1e-2 * distance;
     } else {
@@ -93,7 +94,7 @@ void Rasterizer::clear(Rgb background) {
 Rasterizer::ScreenVertex Rasterizer::project(const Eigen::Vector3d& p, const Eigen::Vector3d& colour) const {
     ScreenVertex s;
     if (camera_.projection == Projection::Perspective) {
-        const double focal = 0.5 * height_ / std::tan(0.5 * camera_.verticalFov);
+        const double focal = 0.5 * height_ / pmath::tan(0.5 * camera_.verticalFov);
         s.x = 0.5 * width_ + focal * p.x() / p.z();
         s.y = 0.5 * height_ - focal * p.y() / p.z();
         s.depth = 1.0 / p.z();

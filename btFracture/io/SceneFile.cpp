@@ -2,6 +2,7 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/PortableMath.h>
 #include <btFracture/io/ReadFile.h>
 
 #include <nlohmann/json.hpp>
@@ -443,7 +444,10 @@ private:
         if (!(axis.norm() > 1e-12))
             fail(child(path, "axis"), "expected a non-zero axis, got " + shown(value["axis"]));
         const double degrees = number(value["degrees"], child(path, "degrees"), "an angle [degrees]");
-        return Eigen::Quaterniond(Eigen::AngleAxisd(degrees * M_PI / 180.0, axis.normalized()));
+        // The rotation by `degrees` about `axis`: (cos(a/2), sin(a/2) axis).
+        const double half = 0.5 * (degrees * M_PI / 180.0);
+        const Eigen::Vector3d v = pmath::sin(half) * axis.normalized();
+        return Eigen::Quaterniond(pmath::cos(half), v.x(), v.y(), v.z());
     }
 
     Material material(const Json& value, const std::string& path, const std::string& bodyName) const {
