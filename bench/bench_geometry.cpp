@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // The implicit-geometry pipeline of one fracture event on the bunny at ~256 voxels across its
 // longest side: level-set build, one crack cut, segmentation into fragments with their mass
 // properties, meshes (fine surface, collision mesh, convex hull) and the parent's visual mesh.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // BEM sources of breakable fragments (issue 6, §5.3): the paper scenes at test resolution (BEM
 // <= 500, collision <= 2,000 triangles, no refracture), and at every cut the breakable
 // fragments' candidate BEM sources: the decimated collision mesh (the former source) and the

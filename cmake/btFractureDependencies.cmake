@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Zlib
 # Finds btFracture's dependencies as Debian 12 ships them. Used by the build and by the
 # installed package (btFractureConfig.cmake), so an app re-finds them on its own machine.
 #

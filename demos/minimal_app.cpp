@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // The shortest complete program that adds btFracture to an ordinary Bullet app: a world, a
 // ground, one breakable glass slab and a steel ball thrown at it. Compared with plain Bullet it
 // changes three things, marked (1) (2) (3).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // How one body fractures: method (paper §3 FULL, §4 EST, §4.4 HYBRID), budgets and the
 // numerical knobs of initiation and propagation. Units: SI; lengths relative to the local BEM

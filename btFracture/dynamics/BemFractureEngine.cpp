@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/BemFractureEngine.h>
 
 #include <btFracture/bem/ElasticSolver.h>

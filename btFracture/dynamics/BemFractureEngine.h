@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The physical fracture engine (paper §3-§5): contact impulses -> Hertz tractions balanced by
 // Eq. 6 -> the body's prefactored BEM (built on first need at the body's BEM resolution) ->

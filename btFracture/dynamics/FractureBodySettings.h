@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Per-body fracture settings of a btFractureRigidBody (SI units).
 #include <btFracture/core/FractureSettings.h>

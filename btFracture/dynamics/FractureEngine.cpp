@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/FractureEngine.h>
 
 #include <btFracture/dynamics/btFractureRigidBody.h>

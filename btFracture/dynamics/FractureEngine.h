@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The seam between the Bullet coupling (btFractureDynamicsWorld) and whatever decides how a body
 // breaks. The world calls FractureEngine::fracture() for a body whose summed contact impulses in

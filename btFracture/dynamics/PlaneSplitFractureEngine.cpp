@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/PlaneSplitFractureEngine.h>
 
 #include <btFracture/core/Error.h>

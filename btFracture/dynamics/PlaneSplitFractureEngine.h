@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // A stand-in FractureEngine for tests and demos until the BEM fracture engine lands: it cuts a
 // convex body in two by a plane through the impact point. No stresses, no cracks: whenever the

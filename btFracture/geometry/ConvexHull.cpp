@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/geometry/ConvexHull.h>
 
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Convex hulls: the collision shape of the smallest fragments (paper §5.2 class (a)) and the
 // operands of the overlap queries between fragments (ConvexPenetration.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Fragments: the connected pieces of a level-set body after crack cuts (paper §5.2, §5.3).
 // All positions are in the parent body's frame [m]; volumes [m^3].

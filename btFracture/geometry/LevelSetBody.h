@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The finest of the three resolutions (paper §1, §5.2): a body as an OpenVDB narrow-band
 // signed-distance level set, plus a crack grid that holds every crack cut into it at voxel

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // LevelSetBody::fragments(): segmentation of the cut object into connected components and the
 // level set, mass, meshes and hull of each (paper §5.2, §5.3). The second of the two
 // translation units that include OpenVDB.

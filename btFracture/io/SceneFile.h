@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Scene files for the headless runner: JSON parsed and validated into a plain Scene (SI units).
 // The format is documented with examples in demos/README.md. Every problem is a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // btfracture-run: the headless runner. Reads a JSON scene (demos/README.md) or a FractureRB
 // .bullet + CSV pair, simulates it and writes the outputs the scene asks for (OBJ and PNG frames,
 // a contact sheet, fracture statistics), then prints a summary table.

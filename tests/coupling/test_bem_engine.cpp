@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // The physical engine end to end (paper §3-§5): a steel ball breaks a glass slab through the
 // BEM, the crack solver and the level set; mass and momentum across the event, the threshold,
 // and determinism.

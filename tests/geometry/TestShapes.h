@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Closed test meshes with known geometry, and the demo meshes scaled to a physical size.
 #include <btFracture/core/Primitives.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // BEM sources of curved fragments (§5.3, issue 6): a bunny cut by a bent crack sheet and an
 // incomplete crack; each breakable piece's LevelSetBody::bemSourceMesh must be a closed,
 // manifold, intersection-free surface of the piece's volume that remeshForBem turns into a

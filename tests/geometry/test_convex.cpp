@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Convex hulls (btConvexHullComputer) and libccd penetration between hulls (GJK + EPA).
 #include "TestShapes.h"
 

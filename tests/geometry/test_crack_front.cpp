@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // The high-resolution crack front (issue 5, paper §3): marker spacing, arrest at the surface and
 // at other cracks, the swept surface cut into a level set, determinism.
 #include "TestShapes.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Quadric edge-collapse decimation: closed, manifold, near the target, shape kept.
 #include "TestShapes.h"
 

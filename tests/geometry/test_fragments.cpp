@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Crack cuts, segmentation into fragments, volume classes (§5.2) and incomplete cracks (§5.3).
 #include "TestShapes.h"
 

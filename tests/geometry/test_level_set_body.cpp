@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // LevelSetBody: mass properties against exact polyhedral integrals, queries and curvature.
 #include "TestShapes.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Consumer of the installed btFracture package: plain Bullet world, a btfracture::Material, and
 // a btFracture scene world (Bullet types crossing the library boundary), in the package's
 // Bullet precision.
