@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Zlib
-// Convex hulls (btConvexHullComputer) and libccd penetration between hulls (GJK + EPA).
+// Convex hulls (exact quickhull) and libccd penetration between hulls (GJK + EPA).
 #include "TestShapes.h"
 
 #include <btFracture/core/Error.h>
@@ -50,6 +50,47 @@ TEST(ConvexHull, SphereHullContainsAllPoints) {
     expectContains(hull, sphere.vertices, 1e-12);
 }
 
+// Lattice points are coplanar and collinear in every direction and each one is given twice:
+// every orientation test there is exact, and the hull is still the box of the corners.
+TEST(ConvexHull, LatticeWithDuplicatesIsItsBoundingBox) {
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 4; ++j)
+            for (int k = 0; k < 3; ++k) {
+                points.emplace_back(0.1 * i, 0.1 * j, 0.1 * k);
+                points.emplace_back(0.1 * i, 0.1 * j, 0.1 * k);
+            }
+    const TriangleMesh hull = convexHullMesh(points, "lattice");
+    EXPECT_EQ(hull.vertices.size(), 8u);
+    const MeshDefects d = inspectMesh(hull);
+    EXPECT_TRUE(d.isClosedManifold()) << d.describe();
+    EXPECT_NEAR(d.signedVolume, 0.4 * 0.3 * 0.2, 1e-15);
+    expectContains(hull, points, 1e-15);
+}
+
+// Voxel corners of an ellipsoid (what a thin fragment's hull is made of): closed, convex, holds
+// every corner.
+TEST(ConvexHull, VoxelCornersOfAnEllipsoid) {
+    std::vector<Eigen::Vector3d> points;
+    const Eigen::Vector3d origin(0.1234, -0.77, 0.3);
+    const double voxel = 0.013;
+    for (int i = -20; i <= 20; ++i)
+        for (int j = -15; j <= 15; ++j)
+            for (int k = -8; k <= 8; ++k) {
+                if (i * i / 400.0 + j * j / 225.0 + k * k / 64.0 > 1.0) continue;
+                for (int c = 0; c < 8; ++c)
+                    points.push_back(origin + voxel * Eigen::Vector3d(i + (c & 1 ? 0.5 : -0.5),
+                                                                      j + (c & 2 ? 0.5 : -0.5),
+                                                                      k + (c & 4 ? 0.5 : -0.5)));
+            }
+    const TriangleMesh hull = convexHullMesh(points, "voxels");
+    const MeshDefects d = inspectMesh(hull);
+    EXPECT_TRUE(d.isClosedManifold()) << d.describe();
+    EXPECT_TRUE(isConvex(hull));
+    expectContains(hull, points, 1e-15);
+    EXPECT_EQ(convexHullMesh(points, "voxels").vertices, hull.vertices);  // deterministic
+}
+
 TEST(ConvexHull, DegenerateInputIsRejected) {
     EXPECT_THROW(convexHullMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, "three points"), Error);
     EXPECT_THROW(convexHullMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0.5, 0.5, 0}}, "flat"), Error);
@@ -65,8 +106,7 @@ ConvexPolytope placed(const std::vector<Eigen::Vector3d>& points, const Eigen::I
     return p;
 }
 
-// Acceptance (issue 5): the penetration depth between two overlapping box hulls matches the
-// hand-computed value.
+// The penetration depth between two overlapping box hulls matches the hand-computed value.
 TEST(ConvexPenetration, OverlappingBoxHullsGiveHandComputedDepth) {
     const auto unit = convexHullMesh(boxCorners({0.5, 0.5, 0.5}), "unit box").vertices;
     const ConvexPolytope a = placed(unit, Eigen::Isometry3d::Identity());
