@@ -12,6 +12,9 @@
 
 namespace btfracture::test {
 
+// Triangles of the fragments' collision meshes in these tests (LevelSetBody::fragments).
+constexpr int kCollisionTriangles = 2000;
+
 // Axis-aligned box [lo, hi], 12 outward triangles (core's makeBox, moved).
 inline TriangleMesh box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
                         const std::string& name = "box") {
