@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -131,14 +132,70 @@ struct Face {
 
 class Quickhull {
 public:
+    // `points` must outlive the object; `name` names it in errors.
     Quickhull(const std::vector<Eigen::Vector3d>& points, const std::string& name)
         : p_(points), name_(name) {}
 
-    TriangleMesh run() {
+    // The hull's faces; corners are indices into the points.
+    void run() {
         simplex();
         for (std::size_t f = 0; f < faces_.size(); ++f)
             if (faces_[f].alive && !faces_[f].outside.empty()) addPoint(static_cast<int>(f));
-        return mesh();
+    }
+
+    // The corners that are extreme points: a point added early can end up inside a flat face or
+    // on an edge of the final hull. Such a corner's faces span one plane (inside a face) or two
+    // (on an edge, between its two neighbours on the crease); an extreme one's span three or
+    // more. Sorted by index.
+    std::vector<int> extremeCorners() const {
+        std::vector<std::vector<int>> incident(p_.size());
+        for (std::size_t f = 0; f < faces_.size(); ++f)
+            if (faces_[f].alive)
+                for (const int v : faces_[f].v) incident[v].push_back(static_cast<int>(f));
+        std::vector<int> extreme;
+        for (std::size_t v = 0; v < p_.size(); ++v) {
+            if (incident[v].empty()) continue;
+            std::vector<int> planes;  // one face of each distinct plane
+            for (const int f : incident[v]) {
+                const auto samePlane = [&](int g) {
+                    for (const int w : faces_[f].v)
+                        if (sideOf(faces_[g], w) != 0) return false;
+                    return true;
+                };
+                if (std::none_of(planes.begin(), planes.end(), samePlane)) planes.push_back(f);
+                if (planes.size() >= 3) break;
+            }
+            if (planes.size() >= 3) extreme.push_back(static_cast<int>(v));
+        }
+        return extreme;
+    }
+
+    std::size_t cornerCount() const {
+        std::vector<bool> used(p_.size(), false);
+        for (const Face& f : faces_)
+            if (f.alive)
+                for (const int v : f.v) used[v] = true;
+        return static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
+    }
+
+    TriangleMesh mesh(const std::string& name) const {
+        TriangleMesh m;
+        m.name = name;
+        std::vector<int> index(p_.size(), -1);
+        for (const Face& f : faces_) {
+            if (!f.alive) continue;
+            std::array<int, 3> t;
+            for (int k = 0; k < 3; ++k) {
+                int& i = index[f.v[k]];
+                if (i < 0) {
+                    i = static_cast<int>(m.vertices.size());
+                    m.vertices.push_back(p_[f.v[k]]);
+                }
+                t[k] = i;
+            }
+            m.triangles.push_back(t);
+        }
+        return m;
     }
 
 private:
@@ -318,26 +375,6 @@ private:
         throw Error(name_ + ": convex hull: inconsistent faces");
     }
 
-    TriangleMesh mesh() const {
-        TriangleMesh m;
-        m.name = name_;
-        std::vector<int> index(p_.size(), -1);
-        for (const Face& f : faces_) {
-            if (!f.alive) continue;
-            std::array<int, 3> t;
-            for (int k = 0; k < 3; ++k) {
-                int& i = index[f.v[k]];
-                if (i < 0) {
-                    i = static_cast<int>(m.vertices.size());
-                    m.vertices.push_back(p_[f.v[k]]);
-                }
-                t[k] = i;
-            }
-            m.triangles.push_back(t);
-        }
-        return m;
-    }
-
     const std::vector<Eigen::Vector3d>& p_;
     std::string name_;
     std::vector<Face> faces_;
@@ -354,7 +391,16 @@ TriangleMesh convexHullMesh(const std::vector<Eigen::Vector3d>& points, const st
         out << name << ": convex hull of " << points.size() << " points spans no volume (need >= 4)";
         throw Error(out.str());
     }
-    return Quickhull(points, name).run();
+    Quickhull hull(points, name);
+    hull.run();
+    const std::vector<int> extreme = hull.extremeCorners();
+    if (extreme.size() == hull.cornerCount()) return hull.mesh(name);
+    // Again over the extreme corners alone, so that every corner is one.
+    std::vector<Eigen::Vector3d> corners;
+    for (const int i : extreme) corners.push_back(points[i]);
+    Quickhull lean(corners, name);
+    lean.run();
+    return lean.mesh(name);
 }
 
 bool isConvex(const TriangleMesh& mesh, double relativeTolerance) {

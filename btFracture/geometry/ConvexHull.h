@@ -12,11 +12,11 @@
 namespace btfracture {
 
 // Outward-oriented closed triangle mesh of the convex hull of `points` (quickhull on exact
-// orientation tests, so any input gives a closed, convex mesh); the corners are input points,
-// exactly, and points inside the hull or on it are not corners unless they were reached first
-// (coplanar faces may keep such a point). Deterministic: the same points in the same order give
-// the same mesh. Throws btfracture::Error naming `name` when the points are not finite or span
-// no volume (fewer than four affinely independent points).
+// orientation tests, so any input gives a closed, convex mesh that contains every point); its
+// corners are the extreme points among `points`, exactly (points inside the hull, on a face or
+// on an edge are not corners). Deterministic: the same points in the same order give the same
+// mesh. Throws btfracture::Error naming `name` when the points are not finite or span no volume
+// (fewer than four affinely independent points).
 TriangleMesh convexHullMesh(const std::vector<Eigen::Vector3d>& points, const std::string& name);
 
 // True when every vertex lies on the inner side of every triangle's plane, within
