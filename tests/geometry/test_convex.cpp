@@ -27,18 +27,23 @@ void expectContains(const TriangleMesh& hull, const std::vector<Eigen::Vector3d>
     }
 }
 
+// The hull of `points` is the box of volume `volume` spanned by eight of them.
+void expectBoxHull(const std::vector<Eigen::Vector3d>& points, double volume, double tolerance) {
+    const TriangleMesh hull = convexHullMesh(points, "box");
+    EXPECT_EQ(hull.vertices.size(), 8u);
+    const MeshDefects d = inspectMesh(hull);
+    EXPECT_TRUE(d.isClosedManifold()) << d.describe();
+    EXPECT_NEAR(d.signedVolume, volume, tolerance);
+    expectContains(hull, points, tolerance);
+}
+
 TEST(ConvexHull, BoxWithInteriorPointsIsTheBox) {
     std::vector<Eigen::Vector3d> points = boxCorners({0.1, 0.2, 0.3});
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (int i = 0; i < 500; ++i) points.emplace_back(0.1 * u(rng), 0.2 * u(rng), 0.3 * u(rng));
-    const TriangleMesh hull = convexHullMesh(points, "box cloud");
-    EXPECT_EQ(hull.vertices.size(), 8u);
-    const MeshDefects d = inspectMesh(hull);
-    EXPECT_TRUE(d.isClosedManifold()) << d.describe();
-    EXPECT_NEAR(d.signedVolume, 0.2 * 0.4 * 0.6, 1e-12);
-    expectContains(hull, points, 1e-12);
-    for (const auto& v : hull.vertices)
+    expectBoxHull(points, 0.2 * 0.4 * 0.6, 1e-12);
+    for (const auto& v : convexHullMesh(points, "box cloud").vertices)
         EXPECT_EQ(v.cwiseAbs(), Eigen::Vector3d(0.1, 0.2, 0.3));  // input points, exactly
 }
 
@@ -60,12 +65,7 @@ TEST(ConvexHull, LatticeWithDuplicatesIsItsBoundingBox) {
                 points.emplace_back(0.1 * i, 0.1 * j, 0.1 * k);
                 points.emplace_back(0.1 * i, 0.1 * j, 0.1 * k);
             }
-    const TriangleMesh hull = convexHullMesh(points, "lattice");
-    EXPECT_EQ(hull.vertices.size(), 8u);
-    const MeshDefects d = inspectMesh(hull);
-    EXPECT_TRUE(d.isClosedManifold()) << d.describe();
-    EXPECT_NEAR(d.signedVolume, 0.4 * 0.3 * 0.2, 1e-15);
-    expectContains(hull, points, 1e-15);
+    expectBoxHull(points, 0.4 * 0.3 * 0.2, 1e-15);
 }
 
 // Voxel corners of an ellipsoid (what a thin fragment's hull is made of): closed, convex, holds
