@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Shortest wall time [s] of `runs` calls of `work`: the benchmarks' noise filter on a shared machine.
 #include <btFracture/core/Timer.h>

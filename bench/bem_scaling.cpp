@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // BEM set-up cost against mesh size: assembly, regularisation (K^T K + gamma T^T T), Cholesky
 // factorisation and one solve, matrix memory, and the factorisation's speed next to a plain
 // dense LLT of the same size on this machine. Meshes: geodesic spheres and the bunny remeshed for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Collision shapes for non-convex fragments: HACD convex decomposition (btCompoundShape of
 // convex hulls) against btGImpactMeshShape (CollisionShapeBuilder.h). Tori stand in for
 // non-convex fragments.

@@ -1,15 +1,16 @@
+// SPDX-License-Identifier: Zlib
 // The implicit-geometry pipeline of one fracture event on the bunny at ~256 voxels across its
 // longest side: level-set build, one crack cut, segmentation into fragments with their mass
 // properties, meshes (fine surface, collision mesh, convex hull) and the parent's visual mesh.
 // Headline: METRIC fragment_pipeline_s (goal <= 10 s on 2 cores) and the process's peak memory.
-// Then the voxel-resolution crack front (issue 5) on the same bunny: a seed in the same plane
+// Then the voxel-resolution crack front on the same bunny: a seed in the same plane
 // grown by markers until they all stop at the surface, and the cut of the surface they swept.
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/PortableMath.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/fracture/CrackFront.h>
+#include <btFracture/fracture/LevelSetFrontQueries.h>
 #include <btFracture/geometry/LevelSetBody.h>
-#include <btFracture/geometry/LevelSetFrontQueries.h>
 #include <btFracture/io/MeshReader.h>
 
 #include <Eigen/Geometry>
@@ -21,6 +22,9 @@
 #include <string>
 
 using namespace btfracture;
+
+// Triangles of each fragment's collision mesh (a body's collisionTriangleTarget in the engine).
+constexpr int kCollisionTriangles = 2000;
 
 int main() {
     TriangleMesh bunny = readMesh(std::string(BTFRACTURE_MESH_DIR) + "/bunny.obj");
@@ -51,7 +55,7 @@ int main() {
     body.cutAlongSurface(sheet, 0);
     const double cut = stage.seconds();
     stage.restart();
-    const auto fragments = body.fragments(FragmentSettings());
+    const auto fragments = body.fragments(FragmentSettings(), kCollisionTriangles);
     const double segment = stage.seconds();
     stage.restart();
     const TriangleMesh visual = body.visualMesh();
@@ -109,7 +113,7 @@ int main() {
     stage.restart();
     marked.cutAlongSurface(sweptSurface, 0);
     const double markerCut = stage.seconds();
-    const auto markerFragments = marked.fragments(FragmentSettings());
+    const auto markerFragments = marked.fragments(FragmentSettings(), kCollisionTriangles);
     std::printf(
         "marker front: %d steps, %d markers at the end, %d swept triangles: %.3f s; their cut %.3f s; "
         "%zu fragments",

@@ -1,4 +1,5 @@
-// Time from impact to spawned fragments (issue 6): the bunny of demos/scenes/bunny_smash.json at
+// SPDX-License-Identifier: Zlib
+// Time from impact to spawned fragments: the bunny of demos/scenes/bunny_smash.json at
 // 1,000 BEM triangles, hit by the steel ball, per fracture method. The step that breaks it is
 // split into BEM (remesh, assembly, factorisation, solves), fracture (SIFs, initiation,
 // propagation), geometry (level set, cuts, segmentation, fragment meshes), swap (restore, spawn,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Mesh loading and checking speed on the shipped meshes, and the rigid-body runner's step rate on
 // the Fig. 1 scene. Plain table; headline lines "METRIC <name> <value> <unit>". Best of 5 runs.
 #include "BestOf.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Idle overhead of btFractureDynamicsWorld: 500 bodies that never break (250 fracturable glass
 // boxes with an unreachable impulse threshold and 250 plain steel spheres) dropped into a bin so
 // that they collide and then rest in a pile, stepped in a btFractureDynamicsWorld (with the

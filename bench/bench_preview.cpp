@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // The runner's preview output on the Fig. 1 scene (demos/scenes/column_bunny.json, ~16,000
 // triangles with the ground square): render time per frame for each image setting, PNG encode
 // time, and the contact sheet. Best of 5 runs; headline lines "METRIC <name> <value> <unit>".

@@ -1,4 +1,5 @@
-// BEM sources of breakable fragments (issue 6, §5.3): the paper scenes at test resolution (BEM
+// SPDX-License-Identifier: Zlib
+// BEM sources of breakable fragments (§5.3): the paper scenes at test resolution (BEM
 // <= 500, collision <= 2,000 triangles, no refracture), and at every cut the breakable
 // fragments' candidate BEM sources: the decimated collision mesh (the former source) and the
 // solid rebuilt at L / k voxels (LevelSetBody::bemSourceMesh) for k = 2, 3, 4. (The fine
@@ -97,9 +98,8 @@ int main(int argc, char** argv) {
             }
         FractureSceneWorldFactory factory(scene.effects.seed);
         factory.setCutObserver([&](const btFractureRigidBody& body, const LevelSetBody& levelSet) {
-            FragmentSettings settings;
-            settings.collisionTriangles = body.settings().collisionTriangleTarget;
-            const std::vector<Fragment> fragments = levelSet.fragments(settings);
+            const std::vector<Fragment> fragments =
+                levelSet.fragments(FragmentSettings(), body.settings().collisionTriangleTarget);
             if (fragments.size() < 2) return;
             for (const Fragment& f : fragments) {
                 if (f.volumeClass != FragmentClass::Breakable &&

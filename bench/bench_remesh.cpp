@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // BEM remeshing speed and quality (geometry/Remesh.h) on the shipped bunny and armadillo. Plain
 // table; headline line "METRIC remesh_bunny_2k_s <seconds> s". Times are the best of 3 runs.
 #include <btFracture/core/Log.h>

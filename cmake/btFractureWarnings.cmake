@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Zlib
 # Strict warnings for btFracture's own targets only; dependencies come in as SYSTEM headers.
 # The fuzz build (clang) reports warnings without failing: the project's -Werror gate is GCC's.
 function(btfracture_strict_warnings target)

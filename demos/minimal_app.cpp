@@ -1,16 +1,13 @@
+// SPDX-License-Identifier: Zlib
 // The shortest complete program that adds btFracture to an ordinary Bullet app: a world, a
 // ground, one breakable glass slab and a steel ball thrown at it. Compared with plain Bullet it
-// changes three things, marked (1) (2) (3).
+// includes one header and changes three things, marked (1) (2) (3).
 //
 // (2) is the physical engine (BEM stress, cracks, level-set fragments); tests use a plane-split
 // stand-in through the same one line.
 //
 // Exit status: 0 when the slab broke, 1 otherwise (it runs as the CTest test coupling.minimal_app).
-#include <btFracture/dynamics/BemFractureEngine.h>
-#include <btFracture/dynamics/btFractureDynamicsWorld.h>
-#include <btFracture/dynamics/btFractureRigidBody.h>
-
-#include <btBulletDynamicsCommon.h>
+#include <btFracture/btFracture.h>  // with Bullet's btBulletDynamicsCommon.h
 
 #include <cstdio>
 #include <memory>

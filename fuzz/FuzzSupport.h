@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Shared by the libFuzzer targets: the entry point libFuzzer calls, and silence for btFracture's
 // log (the fuzzers feed millions of malformed inputs; a line each would drown the output).

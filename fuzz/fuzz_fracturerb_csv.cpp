@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // libFuzzer target: the FractureRB parameter CSV reader (io/FractureRbScene.h). btfracture::Error
 // is the only accepted failure.
 #include "FuzzSupport.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // libFuzzer target: the OBJ loader (io/ObjReader.h) followed by the closed-solid check that
 // readMesh applies (core/MeshCheck.h). A btfracture::Error is the expected answer to bad input;
 // anything else (another exception, a crash, a sanitizer report, a hang) is a bug.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // libFuzzer target: the PLY loader (io/PlyReader.h: ascii and both binary byte orders) followed
 // by the closed-solid check that readMesh applies. btfracture::Error is the only accepted failure.
 #include "FuzzSupport.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // libFuzzer target: the JSON scene parser (io/SceneFile.h). Mesh paths are resolved against a
 // folder that does not exist, so no input reaches the file system beyond an existence check.
 // btfracture::Error is the only accepted failure.

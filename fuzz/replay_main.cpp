@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Replays inputs through a fuzz target's LLVMFuzzerTestOneInput without libFuzzer, so that the
 // seed corpus and every input that once crashed (fuzz/regressions/) run in the ordinary test
 // suite with any compiler. Arguments: files, or folders whose files are replayed in name order.

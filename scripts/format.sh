@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Zlib
 # clang-format over the project's own C++ files: `format.sh fix` rewrites, `format.sh check` fails on drift.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Zlib
 # Installs the Debian 12 packages btFracture needs, but only those that are missing, and says
 # which. Runs apt-get as root, or through sudo when available.
 #   install-deps.sh        what the build, tests, demos and benchmarks need

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Zlib
 # Runs every benchmark executable built under BUILD/bench; each prints lines "METRIC <name> <value> <unit>".
 set -euo pipefail
 build=${1:-build}

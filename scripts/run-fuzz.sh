@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Zlib
 # Runs the libFuzzer targets built in BUILD (make fuzz-short / make fuzz-long).
 #   run-fuzz.sh BUILD short   each target for FUZZ_SECONDS (default 10) seconds
 #   run-fuzz.sh BUILD long    each target for FUZZ_RUNS (default 1000000) executions or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/bem/BoundaryOperators.h>
 
 #include <btFracture/bem/GalerkinBlocks.h>

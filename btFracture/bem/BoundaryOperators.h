@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Symmetric Galerkin operators of 3D linear elastostatics on a closed SurfaceMesh, with P1
 // displacements and P0 tractions (formulas in FORMULATION.md):

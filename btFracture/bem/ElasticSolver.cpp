@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/bem/ElasticSolver.h>
 
 #include <btFracture/bem/RigidModes.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Pure-Neumann elastostatics on one body (paper §3): assemble K and F, regularise with the
 // rigid-mode operator T (Eq. 1-3), factor K_R = K^T K + gamma T^T T once, then

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The 3x3 Galerkin blocks shared by every assembly (surface K and F, crack blocks C, D, G): the
 // hypersingular operator and the adjoint double layer after integration by parts, in terms of

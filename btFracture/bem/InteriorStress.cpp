@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/bem/InteriorStress.h>
 
 #include <btFracture/bem/Quadrature.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Stress anywhere in the body from the boundary solution (paper §4.1, appendix Eq. 7): the
 // Somigliana stress identity with the Kelvin kernels S1 (tractions) and S2 (displacements),

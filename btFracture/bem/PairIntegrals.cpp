@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/bem/PairIntegrals.h>
 
 #include <btFracture/bem/Quadrature.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Material-independent double integrals over one pair of flat triangles, the only quadrature
 // the Galerkin operators need (see FORMULATION.md): after integration by parts the

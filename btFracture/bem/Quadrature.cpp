@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/bem/Quadrature.h>
 
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Quadrature rules on [0, 1] and on triangles (barycentric points, weights summing to 1).
 #include <vector>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/bem/RigidModes.h>
 
 #include <btFracture/core/CrossMatrix.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The regulariser T = (T_d; T_r) of paper Eq. 1-2 (6 x 3n): mean surface displacement and mean
 // surface rotation of a P1 displacement field, and the P0 net force / torque of tractions.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Sauter-Schwab quadrature for singular pairs of flat triangles.
 #include <btFracture/bem/Quadrature.h>

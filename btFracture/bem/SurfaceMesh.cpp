@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/bem/SurfaceMesh.h>
 
 #include <btFracture/core/ClosestPoint.h>

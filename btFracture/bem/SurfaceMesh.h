@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The BEM's boundary mesh: flat triangles with P1 nodes, centred at the solid's centre of mass
 // (paper §3, "without loss of generality"), with the per-triangle data every operator needs.

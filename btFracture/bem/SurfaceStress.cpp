@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/bem/SurfaceStress.h>
 
 #include <Eigen/Geometry>

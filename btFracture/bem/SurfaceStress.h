@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Surface stress per triangle, paper §4.1 and Eq. 5: the in-plane stress of the P1
 // displacement (plane stress, "2D FEM"), made consistent with the known traction q and

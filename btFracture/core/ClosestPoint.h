@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Closest point on a triangle (Ericson, Real-Time Collision Detection, 5.1.5), optionally with
 // the feature (face, edge or vertex) it lies on; the feature selects the pseudonormal for an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The one exception type btFracture throws. Messages name the problem, the offending value
 // and where it came from (file, key, body), so that a user can act on them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/core/FractureSettings.h>
 
 #include <btFracture/core/Error.h>
@@ -6,6 +7,17 @@
 #include <sstream>
 
 namespace btfracture {
+namespace {
+
+// "<where>: <field> <value> (need <range>)"
+void require(bool ok, const std::string& where, const char* field, double value, const char* range) {
+    if (ok) return;
+    std::ostringstream msg;
+    msg << where << ": " << field << " " << value << " (need " << range << ")";
+    throw Error(msg.str());
+}
+
+}  // namespace
 
 const char* toString(FractureMethod method) {
     switch (method) {
@@ -26,27 +38,32 @@ FractureMethod fractureMethodFromString(const std::string& text) {
     throw Error("expected \"full\", \"est\" or \"hybrid\", got \"" + text + "\"");
 }
 
+void MaterialNoise::validate(const std::string& where) const {
+    require(amplitude >= 0.0 && amplitude < 1.0, where, "materialNoise.amplitude", amplitude, "[0, 1)");
+    require(wavelength > 0.0 && std::isfinite(wavelength), where, "materialNoise.wavelength", wavelength,
+            "finite, > 0 m");
+}
+
+void FractureMethodSettings::validate(const std::string& where) const {
+    require(hybridElementThreshold >= 1, where, "hybridElementThreshold", hybridElementThreshold, ">= 1");
+}
+
+void CrackSettings::validate(const std::string& where) const {
+    require(maxNewCracksPerEvent >= 0, where, "maxNewCracksPerEvent", maxNewCracksPerEvent, ">= 0");
+    require(maxStepsPerEvent >= 0, where, "maxStepsPerEvent", maxStepsPerEvent, ">= 0");
+    require(seedRadius > 0.0 && seedRadius <= 2.0, where, "seedRadius", seedRadius, "(0, 2]");
+    require(frontEdgeLength > 0.05 && frontEdgeLength <= 4.0, where, "frontEdgeLength", frontEdgeLength,
+            "(0.05, 4]");
+    require(minimumSpeed > 0.0 && minimumSpeed <= 1.0, where, "minimumSpeed", minimumSpeed, "(0, 1]");
+    require(estimatorGeometryFactor > 0.0 && std::isfinite(estimatorGeometryFactor), where,
+            "estimatorGeometryFactor", estimatorGeometryFactor, "finite, > 0");
+    require(estimatorUpdateGainLimit == 0.0 || estimatorUpdateGainLimit >= 1.0, where,
+            "estimatorUpdateGainLimit", estimatorUpdateGainLimit, "0 = off, or >= 1");
+}
+
 void FractureSettings::validate() const {
-    auto fail = [](const char* field, double value, const char* expected) {
-        std::ostringstream msg;
-        msg << "fracture settings: " << field << " = " << value << ", expected " << expected;
-        throw Error(msg.str());
-    };
-    if (hybridElementThreshold < 1) fail("hybridElementThreshold", hybridElementThreshold, ">= 1");
-    if (maxNewCracksPerEvent < 0) fail("maxNewCracksPerEvent", maxNewCracksPerEvent, ">= 0");
-    if (maxStepsPerEvent < 0) fail("maxStepsPerEvent", maxStepsPerEvent, ">= 0");
-    if (!(seedRadius > 0.0 && seedRadius <= 2.0)) fail("seedRadius", seedRadius, "in (0, 2]");
-    if (!(frontEdgeLength > 0.05 && frontEdgeLength <= 4.0))
-        fail("frontEdgeLength", frontEdgeLength, "in (0.05, 4]");
-    if (!(minimumSpeed > 0.0 && minimumSpeed <= 1.0)) fail("minimumSpeed", minimumSpeed, "in (0, 1]");
-    if (!(estimatorGeometryFactor > 0.0 && std::isfinite(estimatorGeometryFactor)))
-        fail("estimatorGeometryFactor", estimatorGeometryFactor, "positive");
-    if (!(estimatorUpdateGainLimit == 0.0 || estimatorUpdateGainLimit >= 1.0))
-        fail("estimatorUpdateGainLimit", estimatorUpdateGainLimit, "0 (off) or >= 1");
-    if (!(noise.amplitude >= 0.0 && noise.amplitude < 1.0))
-        fail("noise.amplitude", noise.amplitude, "in [0, 1)");
-    if (!(noise.wavelength > 0.0 && std::isfinite(noise.wavelength)))
-        fail("noise.wavelength", noise.wavelength, "positive");
+    CrackSettings::validate("fracture settings");
+    FractureMethodSettings::validate("fracture settings");
 }
 
 }  // namespace btfracture

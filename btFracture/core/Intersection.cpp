@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/core/Intersection.h>
 
 #include <btFracture/core/PortableMath.h>

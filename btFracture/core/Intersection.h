@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Point-in-solid and segment-triangle queries on plain triangle data.
 #include <Eigen/Core>

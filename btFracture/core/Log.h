@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Minimal logging: every clamp, fix-up or fallback in btFracture goes through here so that
 // nothing changes silently. Apps may redirect messages with setLogSink().

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Exact mass properties of a closed, outward-oriented triangle mesh (divergence theorem over
 // the tetrahedra spanned by each triangle and the origin).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/core/Material.h>
 
 #include <btFracture/core/Error.h>

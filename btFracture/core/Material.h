@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Isotropic linear elastic, brittle material in SI units, validated on construction.
 #include <string>

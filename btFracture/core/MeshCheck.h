@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Validation of triangle meshes that are meant to bound a solid.
 #include <btFracture/core/TriangleMesh.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Dense products on all cores whose result does not depend on the thread count. Eigen's own
 // OpenMP products choose their blocking (and so their rounding) by the number of threads; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Closed triangle meshes of simple solids, outward oriented, for tests, demos and Bullet
 // primitives that need a surface mesh.

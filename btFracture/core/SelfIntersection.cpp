@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/core/SelfIntersection.h>
 
 #include <Eigen/Geometry>

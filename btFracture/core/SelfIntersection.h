@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Self-intersection of a triangle mesh: pairs of triangles that meet anywhere other than in the
 // vertices or the edge they share. Neighbours that only share a vertex or an edge do not count;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Caps the worker threads of OpenMP and TBB (the libraries btFracture parallelises with) while
 // the object lives. Results never depend on the thread count; only the speed does.

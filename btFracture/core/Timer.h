@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Wall-clock stopwatch in seconds.
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Plain indexed triangle mesh (counter-clockwise seen from outside = outward normals).
 #include <Eigen/Core>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Disjoint sets over 0..n-1 with path halving: connected components of triangles or voxels.
 #include <numeric>

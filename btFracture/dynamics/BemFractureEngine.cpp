@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/BemFractureEngine.h>
 
 #include <btFracture/bem/ElasticSolver.h>
@@ -10,9 +11,9 @@
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/fracture/CrackFront.h>
 #include <btFracture/fracture/FractureSolver.h>
+#include <btFracture/fracture/LevelSetFrontQueries.h>
 #include <btFracture/fracture/StressIntensity.h>
 #include <btFracture/geometry/LevelSetBody.h>
-#include <btFracture/geometry/LevelSetFrontQueries.h>
 #include <btFracture/geometry/Remesh.h>
 
 #include <Eigen/Geometry>
@@ -99,7 +100,7 @@ std::map<int, int> sheetTriangleCounts(const CrackMesh& cracks) {
     return count;
 }
 
-// FractureSolver's growth observer (issue 5): moves the markers by this step's coarse advances
+// FractureSolver's growth observer: moves the markers by this step's coarse advances
 // (a new sheet gets markers, and its seed triangles join the surface to cut) and returns the
 // coarse nodes whose markers all stopped, with where they stopped (read off the markers).
 FractureSolver::GrowthFeedback advanceMarkers(BemFractureState& s, const CrackMesh& cracks,
@@ -147,7 +148,7 @@ constexpr double kBemSourceVoxelsPerEdge = 3.0;
 // scaled to the body's.
 constexpr double kVolumeScaleLogged = 0.01;
 
-void buildBem(BemFractureState& s, const btFractureRigidBody& body, const FractureSettings& base,
+void buildBem(BemFractureState& s, const btFractureRigidBody& body, const CrackSettings& crack,
               bool voxelFronts, FractureStatistics& stats) {
     const FractureBodySettings& b = body.settings();
     // Sources to remesh, best first, each made only when the ones before it failed. A fragment
@@ -234,12 +235,11 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const Fractu
     const SurfaceMesh& mesh = s.solver->mesh();
     TriangleMesh centred{mesh.nodes(), mesh.triangles(), body.name() + " (BEM)"};
     s.balancer = std::make_unique<TractionBalancer>(std::move(centred));
-    FractureSettings settings = base;
-    settings.method = b.method;
-    settings.hybridElementThreshold = std::max(1, b.hybridElementThreshold);
-    if (b.materialNoise.amplitude > 0.0) settings.noise = b.materialNoise;
-    s.fracture =
-        std::make_unique<FractureSolver>(*s.solver, MaterialField(body.material(), settings.noise), settings);
+    FractureSettings settings;
+    static_cast<CrackSettings&>(settings) = crack;
+    static_cast<FractureMethodSettings&>(settings) = b;
+    s.fracture = std::make_unique<FractureSolver>(*s.solver, MaterialField(body.material(), b.materialNoise),
+                                                  settings);
     BemFractureState* state = &s;  // owned by the body, outlives its FractureSolver
     if (voxelFronts) {
         s.fracture->setGrowthObserver(
@@ -346,24 +346,10 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
     return out;
 }
 
-FragmentSpec::Class specClass(FragmentClass c) {
-    switch (c) {
-        case FragmentClass::ConvexHull:
-            return FragmentSpec::Class::ConvexHull;
-        case FragmentClass::Unbreakable:
-            return FragmentSpec::Class::Mesh;
-        case FragmentClass::Breakable:
-            return FragmentSpec::Class::Breakable;
-        case FragmentClass::KeepsParentSolver:
-            return FragmentSpec::Class::KeepsParentSolver;
-    }
-    return FragmentSpec::Class::Mesh;
-}
-
 }  // namespace
 
 BemFractureEngine::BemFractureEngine(const BemFractureEngineSettings& settings) : settings_(settings) {
-    settings_.fracture.validate();
+    settings_.fracture.validate("BemFractureEngine settings");
     settings_.fragments.validate();
 }
 
@@ -450,9 +436,7 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     }
     outcome.crackTriangles = s.fracture->cracks().triangleCount();
     if (cutObserver_) cutObserver_(body, *s.levelSet);
-    FragmentSettings fragmentSettings = settings_.fragments;
-    fragmentSettings.collisionTriangles = b.collisionTriangleTarget;
-    std::vector<Fragment> fragments = s.levelSet->fragments(fragmentSettings);
+    std::vector<Fragment> fragments = s.levelSet->fragments(settings_.fragments, b.collisionTriangleTarget);
     outcome.timings.geometry += timer.seconds();
     if (fragments.size() < 2) return outcome;  // cracked, not yet apart: the cracks stay for later events
 
@@ -481,7 +465,7 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     Eigen::Isometry3d keptBodyToState = parentToState;
     for (Fragment& f : fragments) {
         FragmentSpec spec;
-        spec.cls = specClass(f.volumeClass);
+        spec.cls = fragmentSpecClass(f.volumeClass);
         // Geometry is in the state frame; the spec is in the parent's body frame.
         spec.collisionMesh = spec.cls == FragmentSpec::Class::ConvexHull ? f.convexHull : f.collisionMesh;
         if (!holdsVolume(spec.collisionMesh, f.mass.volume)) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The physical fracture engine (paper §3-§5): contact impulses -> Hertz tractions balanced by
 // Eq. 6 -> the body's prefactored BEM (built on first need at the body's BEM resolution) ->
@@ -6,15 +7,15 @@
 // level set with their incomplete cracks and those cracks' sheets (§5.3); the > 95 % fragment
 // keeps the parent's whole state, BEM included.
 //
-// Cutting (issue 5, §3): voxel-resolution markers (CrackFront.h) follow the coarse front in every
-// crack step, slide along the level set's surface where the coarse front does (SurfaceSlide.h),
-// stop at it otherwise and in cracks cut earlier, stop the coarse nodes whose markers all
-// stopped (after that step's move), are carried on to the surface or another crack where the
-// coarse front stopped, and the surface they swept is cut into the level set. With voxelFronts
-// off the coarse BEM crack sheet is cut instead (extended to the surface where its front stopped).
+// Cutting (§3): voxel-resolution markers (CrackFront.h) follow the coarse front in every crack
+// step, slide along the level set's surface where the coarse front does (SurfaceSlide.h), stop
+// at it otherwise and in cracks cut earlier, stop the coarse nodes whose markers all stopped
+// (after that step's move), are carried on to the surface or another crack where the coarse
+// front stopped, and the surface they swept is cut into the level set. With voxelFronts off the
+// coarse BEM crack sheet is cut instead (extended to the surface where its front stopped).
 #include <btFracture/core/FractureSettings.h>
 #include <btFracture/dynamics/FractureEngine.h>
-#include <btFracture/geometry/Fragment.h>
+#include <btFracture/geometry/FragmentClasses.h>
 
 #include <functional>
 
@@ -22,14 +23,13 @@ namespace btfracture {
 
 class LevelSetBody;
 
+// The engine's own settings; a body's method, resolutions and noise are its
+// FractureBodySettings.
 struct BemFractureEngineSettings {
-    // Crack initiation and propagation; method and hybrid threshold come from each body's
-    // FractureBodySettings.
-    FractureSettings fracture;
-    // Volume classes; collisionTriangles comes from each body's collisionTriangleTarget.
-    FragmentSettings fragments;
-    // Cut the surface swept by voxel-resolution crack fronts (issue 5) instead of the coarse
-    // crack sheet (see the header comment).
+    CrackSettings fracture;      // crack initiation and propagation
+    FragmentSettings fragments;  // volume classes (§5.2)
+    // Cut the surface swept by the voxel-resolution crack fronts instead of the coarse crack
+    // sheet (see the header comment; scene key effects.crack_cut).
     bool voxelFronts = true;
 };
 

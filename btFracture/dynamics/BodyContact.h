@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // One contact of a fracturable body during one rigid-body step, as the fracture engine sees it.
 #include <Eigen/Core>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Conversions at the Bullet boundary: btScalar (float or double, per Bullet's build) outside,
 // double precision Eigen inside.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/ClosestSurfacePoint.h>
 
 #include <Eigen/Geometry>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Closest point on a triangle mesh's surface (brute force over the triangles: meant for BEM and
 // collision meshes of up to a few thousand triangles and a handful of queries per event).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/CollisionShapeBuilder.h>
 
 #include <btFracture/core/Error.h>

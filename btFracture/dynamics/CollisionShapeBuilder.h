@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Bullet collision shapes for btFracture bodies and fragments, built from a closed mesh given in
 // the body frame (centre of mass, principal axes), plus the data the shapes point into.

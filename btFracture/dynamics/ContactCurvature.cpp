@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/ContactCurvature.h>
 
 #include <btFracture/core/PortableMath.h>

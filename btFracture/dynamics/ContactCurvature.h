@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Mean curvature at a contact point, the inverse of the Hertz radius (paper §5.1).
 //

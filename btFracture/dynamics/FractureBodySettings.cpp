@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/FractureBodySettings.h>
 
 #include <btFracture/core/Error.h>
@@ -8,11 +9,12 @@
 namespace btfracture {
 
 void validate(const FractureBodySettings& s, const std::string& body) {
+    const std::string where = body + ": fracture settings";
+    s.validate(where);  // method and its threshold
+    s.materialNoise.validate(where);
     std::ostringstream problem;
     if (!(s.impulseThreshold >= 0.0) || !std::isfinite(s.impulseThreshold))
         problem << "impulseThreshold " << s.impulseThreshold << " N s (need finite, >= 0)";
-    else if (s.hybridElementThreshold < 0)
-        problem << "hybridElementThreshold " << s.hybridElementThreshold << " (need >= 0)";
     else if (s.bemTriangleTarget < 4)
         problem << "bemTriangleTarget " << s.bemTriangleTarget << " (need >= 4)";
     else if (s.collisionTriangleTarget < s.bemTriangleTarget)
@@ -24,11 +26,7 @@ void validate(const FractureBodySettings& s, const std::string& body) {
         problem << "maxRefractureDepth " << s.maxRefractureDepth << " (need >= 0)";
     else if (s.refractureDepth < 0)
         problem << "refractureDepth " << s.refractureDepth << " (need >= 0)";
-    else if (!(s.materialNoise.amplitude >= 0.0 && s.materialNoise.amplitude < 1.0))
-        problem << "materialNoise.amplitude " << s.materialNoise.amplitude << " (need [0, 1))";
-    else if (!(s.materialNoise.wavelength > 0.0) || !std::isfinite(s.materialNoise.wavelength))
-        problem << "materialNoise.wavelength " << s.materialNoise.wavelength << " m (need finite, > 0)";
-    if (problem.tellp() > 0) throw Error(body + ": fracture settings: " + problem.str());
+    if (problem.tellp() > 0) throw Error(where + ": " + problem.str());
 }
 
 }  // namespace btfracture

@@ -1,5 +1,7 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
-// Per-body fracture settings of a btFractureRigidBody (SI units).
+// Per-body fracture settings of a btFractureRigidBody (SI units). With the material, these are
+// what a body's fracture depends on; the engine adds its own (BemFractureEngineSettings).
 #include <btFracture/core/FractureSettings.h>
 #include <btFracture/dynamics/CollisionShapeBuilder.h>
 
@@ -7,16 +9,15 @@
 
 namespace btfracture {
 
-struct FractureBodySettings {
+// method and hybridElementThreshold come from FractureMethodSettings.
+struct FractureBodySettings : FractureMethodSettings {
     bool fracturable = true;  // false: a plain Bullet body, the world's hook never looks at it
-    FractureMethod method = FractureMethod::Hybrid;
-    int hybridElementThreshold = 2000;  // HYBRID switches FULL -> EST above this many BEM elements
     // Cheap trigger: the fracture engine runs only when the sum of the normal impulses on the
     // body in one step reaches this value [N s].
     double impulseThreshold = 1.0;
-    int bemTriangleTarget = 1000;        // BEM mesh resolution [triangles]
-    int collisionTriangleTarget = 5000;  // collision mesh resolution [triangles], >= BEM target
-    double voxelSize = 0.0;              // level-set voxel size [m]; 0: the engine chooses
+    int bemTriangleTarget = 1000;        // BEM mesh resolution [triangles], >= 4
+    int collisionTriangleTarget = 5000;  // collision mesh of its fragments [triangles], >= BEM target
+    double voxelSize = 0.0;              // level-set voxel size [m]; 0: longest side / 128
     // Generations: an original body has refractureDepth 0, a breakable fragment its parent's + 1
     // (the > 95 % fragment keeps its parent's). A body breaks only while
     // refractureDepth <= maxRefractureDepth.
@@ -26,8 +27,7 @@ struct FractureBodySettings {
     // get a btConvexHullShape); see CollisionShapeBuilder.h for the trade-off.
     CollisionShapeKind concaveShapeKind = CollisionShapeKind::ConvexDecomposition;
     CollisionShapeOptions shapeOptions;
-    // Seeded spatial variation of this body's strength and toughness; amplitude 0 (the default)
-    // leaves the engine's own FractureSettings::noise in force.
+    // Seeded spatial variation of this body's strength and toughness (off by default).
     MaterialNoise materialNoise;
 };
 

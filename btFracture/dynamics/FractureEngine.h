@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The seam between the Bullet coupling (btFractureDynamicsWorld) and whatever decides how a body
 // breaks. The world calls FractureEngine::fracture() for a body whose summed contact impulses in
@@ -10,6 +11,7 @@
 #include <btFracture/core/TriangleMesh.h>
 #include <btFracture/dynamics/BodyContact.h>
 #include <btFracture/dynamics/FractureState.h>
+#include <btFracture/geometry/FragmentClasses.h>
 
 #include <Eigen/Core>
 
@@ -58,6 +60,9 @@ struct FragmentSpec {
     // Ignored (must be null) for the other classes; KeepsParentSolver gets the parent's state.
     std::unique_ptr<FractureState> carriedState;
 };
+
+// The spec class of a fragment of that volume class.
+FragmentSpec::Class fragmentSpecClass(FragmentClass c);
 
 // Where the engine's time went (wall clock [s]); reported to listeners in FractureEventInfo.
 struct EngineTimings {

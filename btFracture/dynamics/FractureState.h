@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Opaque per-body fracture state (BEM solver, level set, cracks, ...), created lazily by a
 // FractureEngine and owned by the btFractureRigidBody it belongs to. The world never looks

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/FragmentSeparation.h>
 
 #include <btFracture/core/Log.h>

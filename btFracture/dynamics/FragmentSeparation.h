@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Separates freshly spawned fragments whose collision shapes overlap (paper §5.2: fragments
 // take the parent's place; overlapping shapes would make the replayed step push them apart

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Hertzian impact of two elastic bodies (paper §5.1; Johnson, Contact Mechanics §11.4; Popov
 // 2010 ch. 5): contact duration and peak force from the effective modulus, radius and mass.

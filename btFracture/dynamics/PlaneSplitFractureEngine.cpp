@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/PlaneSplitFractureEngine.h>
 
 #include <btFracture/core/Error.h>
@@ -118,13 +119,8 @@ std::pair<TriangleMesh, TriangleMesh> splitConvexMesh(const TriangleMesh& mesh, 
     return {half(mesh, distance, 1.0, n, name + "+"), half(mesh, distance, -1.0, n, name + "-")};
 }
 
-PlaneSplitFractureEngine::PlaneSplitFractureEngine(const PlaneSplitSettings& settings) : settings_(settings) {
-    if (!(settings.convexHullFraction >= 0.0 && settings.convexHullFraction <= settings.meshFraction &&
-          settings.meshFraction <= 1.0 && settings.keepParentFraction > 0.5 &&
-          settings.keepParentFraction <= 1.0))
-        throw Error(
-            "PlaneSplitFractureEngine: volume fractions must satisfy 0 <= convexHull <= mesh <= 1 and "
-            "0.5 < keepParent <= 1");
+PlaneSplitFractureEngine::PlaneSplitFractureEngine(const FragmentSettings& settings) : settings_(settings) {
+    settings_.validate();
 }
 
 void PlaneSplitFractureEngine::ensureState(btFractureRigidBody& body, FractureStatistics& stats) const {
@@ -168,15 +164,8 @@ FractureOutcome PlaneSplitFractureEngine::split(const btFractureRigidBody& body,
         spec.volume = mp.volume;
         spec.centreOfMass = mp.centreOfMass;
         spec.inertiaAboutCom = body.material().density() * mp.inertiaPerDensity;
-        const double ofOriginal = mp.volume / body.originalVolume();
-        if (mp.volume > settings_.keepParentFraction * body.volume())
-            spec.cls = FragmentSpec::Class::KeepsParentSolver;
-        else if (ofOriginal < settings_.convexHullFraction)
-            spec.cls = FragmentSpec::Class::ConvexHull;
-        else if (ofOriginal < settings_.meshFraction)
-            spec.cls = FragmentSpec::Class::Mesh;
-        else
-            spec.cls = FragmentSpec::Class::Breakable;
+        spec.cls =
+            fragmentSpecClass(classifyFragment(mp.volume, body.volume(), body.originalVolume(), settings_));
         spec.collisionMesh = std::move(*piece);
         outcome.fragments.push_back(std::move(spec));
     }

@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
-// A stand-in FractureEngine for tests and demos until the BEM fracture engine lands: it cuts a
-// convex body in two by a plane through the impact point. No stresses, no cracks: whenever the
-// world calls it (impulse sum over the body's threshold), the body splits.
+// A stand-in FractureEngine for tests of the coupling alone: it cuts a convex body in two by a
+// plane through the impact point. No stresses, no cracks: whenever the world calls it (impulse
+// sum over the body's threshold), the body splits.
 //
 //  - impact point p and direction d are those of the contact with the largest Hertz peak force
 //    (the hardest impact; resting contacts, e.g. on the ground, have tiny peak forces);
@@ -9,25 +10,20 @@
 //    (lowest index on ties), so a slab hit on its face splits across its thinnest direction;
 //  - halves are exact closed meshes (Sutherland-Hodgman per triangle, the cap fanned around its
 //    centroid) and their mass properties are exact polyhedral integrals (MassProperties.h);
-//  - classes follow §5.2 with the settings' volume fractions;
+//  - classes follow §5.2 (classifyFragment with the settings' volume fractions);
 //  - per body it builds a TractionBalancer (Eq. 6) on first use as its FractureState and counts
 //    that as one "BEM build" in FractureStatistics::bemBuilds, to exercise the lazy state path;
 //    the > 95 % fragment keeps that state, new breakable fragments start without one.
 // Only convex bodies are supported (checked; a non-convex body throws btfracture::Error, which the
 // world turns into an unbreakable body).
 #include <btFracture/dynamics/FractureEngine.h>
+#include <btFracture/geometry/FragmentClasses.h>
 
 namespace btfracture {
 
-struct PlaneSplitSettings {
-    double convexHullFraction = 0.005;  // < this share of the original volume: class ConvexHull
-    double meshFraction = 0.02;         // < this share: class Mesh; else Breakable
-    double keepParentFraction = 0.95;   // > this share of the parent's volume: KeepsParentSolver
-};
-
 class PlaneSplitFractureEngine : public FractureEngine {
 public:
-    explicit PlaneSplitFractureEngine(const PlaneSplitSettings& settings = {});
+    explicit PlaneSplitFractureEngine(const FragmentSettings& settings = {});
     FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
                              FractureStatistics& stats) override;
 
@@ -40,7 +36,7 @@ protected:
                           const Eigen::Vector3d& n) const;
 
 private:
-    PlaneSplitSettings settings_;
+    FragmentSettings settings_;
 };
 
 // The two closed halves of a convex closed mesh cut by the plane n.(x - p) = 0; first the half on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/RigidBodySnapshot.h>
 
 #include <BulletDynamics/Dynamics/btRigidBody.h>

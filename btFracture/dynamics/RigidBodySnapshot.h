@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Poses, velocities and sleeping states of a world's non-static rigid bodies at the start of an
 // internal step, so that btFractureDynamicsWorld can roll a step back and replay it (§5.2).

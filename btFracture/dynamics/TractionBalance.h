@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Contact impulses to a piecewise-constant (P0) surface traction field on the BEM mesh, and
 // its projection onto zero net force and torque (paper §5.1, Eq. 6).

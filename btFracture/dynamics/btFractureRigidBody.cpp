@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/btFractureRigidBody.h>
 
 #include <btFracture/core/Error.h>

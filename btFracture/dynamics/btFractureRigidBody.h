@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // A Bullet rigid body that can break (paper §5). It is an ordinary btRigidBody for Bullet; in a
 // btFractureDynamicsWorld its contacts are watched and, above its impulse threshold, handed to

@@ -38,9 +38,7 @@ double valueNoise(const Eigen::Vector3d& p, std::uint64_t seed) {
 
 MaterialField::MaterialField(const Material& material, const MaterialNoise& noise)
     : material_(material), noise_(noise) {
-    FractureSettings check;
-    check.noise = noise;
-    check.validate();
+    noise.validate("material field");
 }
 
 double MaterialField::variation(const Eigen::Vector3d& x) const {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Bounding-volume hierarchy over the triangles of a mesh that answers "closest point on the
 // surface" queries; used to project remeshed vertices back onto an input surface and to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Penetration depth between two convex polytopes (libccd, double precision), used to separate
 // freshly spawned fragment hulls before the replayed step (paper §5.2).

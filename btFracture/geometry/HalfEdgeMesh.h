@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Half-edge connectivity of a closed, manifold, consistently oriented triangle mesh with the
 // local edits that remeshing needs: edge split, edge collapse and edge flip, plus previews of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/geometry/IntersectionSmoothing.h>
 
 #include <btFracture/core/SelfIntersection.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // A coarse mesh of a surface that does not touch itself can still intersect itself: chords
 // between vertices on two close parts (the armadillo's claws, an ear against the head) cut

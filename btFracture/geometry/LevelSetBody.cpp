@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // LevelSetBody: building the level set, mass integrals, queries, curvature, meshing and crack
 // cuts. One of the two translation units that include OpenVDB (the other: LevelSetFragments.cpp).
 #include <btFracture/geometry/LevelSetBody.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The finest of the three resolutions (paper §1, §5.2): a body as an OpenVDB narrow-band
 // signed-distance level set, plus a crack grid that holds every crack cut into it at voxel
@@ -132,8 +133,9 @@ public:
     // the crack, from the voxels along its rim). Incomplete cracks
     // (both sides in the same fragment) are filled for mass, collision and BEM surface and
     // carried over into Fragment::levelSet (§5.3). Sorted by decreasing volume (ties: lowest
-    // voxel first). Throws btfracture::Error for invalid settings.
-    std::vector<Fragment> fragments(const FragmentSettings& settings) const;
+    // voxel first). Each collision mesh has about `collisionTriangles` triangles (>= 4). Throws
+    // btfracture::Error for invalid settings.
+    std::vector<Fragment> fragments(const FragmentSettings& settings, int collisionTriangles) const;
 
     struct Impl;  // OpenVDB grids (internal/LevelSetGrids.h)
 

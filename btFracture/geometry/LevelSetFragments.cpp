@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // LevelSetBody::fragments(): segmentation of the cut object into connected components and the
 // level set, mass, meshes and hull of each (paper §5.2, §5.3). The second of the two
 // translation units that include OpenVDB.
@@ -138,8 +139,12 @@ void dropIslands(FloatGrid& phi, const BoolGrid& component, float background) {
 
 }  // namespace
 
-std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) const {
+std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings,
+                                              int collisionTriangles) const {
     settings.validate();
+    if (collisionTriangles < 4)
+        throw Error(impl_->name + ": fragments: collisionTriangles " + std::to_string(collisionTriangles) +
+                    " (need >= 4)");
     const Impl& body = *impl_;
     const double dx = body.voxelSize;
     const float background = kHalfWidthVoxels * static_cast<float>(dx);
@@ -297,8 +302,7 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings) 
                  " surface vertices) is too thin to mesh; its surface is the hull of its voxels");
             surface = voxelHull(*phi, f.name);
         }
-        f.collisionMesh =
-            collisionMeshFromGrid(*phi, settings.collisionTriangles, f.name + " (collision)", &surface);
+        f.collisionMesh = collisionMeshFromGrid(*phi, collisionTriangles, f.name + " (collision)", &surface);
         try {
             f.convexHull = convexHullMesh(surface.vertices, f.name + " (convex hull)");
         } catch (const Error&) {  // a flat sliver

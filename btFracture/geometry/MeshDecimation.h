@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Quadric edge-collapse decimation (Garland & Heckbert 1997) for collision meshes.
 #include <btFracture/core/TriangleMesh.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/geometry/MeshQuality.h>
 
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Shape quality of a triangle mesh, as the boundary element method sees it: angles (a triangle
 // with all angles >= 20 degrees is neither a needle nor a sliver/cap) and edge lengths.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/geometry/QualityRepair.h>
 
 #include <btFracture/geometry/RemeshEdits.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Removes triangles with an angle below a bound from a mesh that lives on a reference surface,
 // by local edits that each raise the smallest angle of the region they touch: flipping an edge

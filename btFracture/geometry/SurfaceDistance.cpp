@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/geometry/SurfaceDistance.h>
 
 #include <btFracture/core/Error.h>

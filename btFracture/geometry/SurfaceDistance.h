@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Distances between two triangulated surfaces, measured by sampling one surface and finding
 // the closest point on the other (ClosestPointTree).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/geometry/SurfaceFit.h>
 
 #include <btFracture/core/SelfIntersection.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // A mesh whose vertices lie on a curved surface cuts inside it where the surface is convex (and
 // bulges outside where it is concave): a remeshed sphere with 500 triangles has about 1.5 %

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // A 5 x 7 pixel bitmap font for labels on preview images and plots: digits, letters (lower case
 // drawn as upper case) and common punctuation; other characters are drawn as '?'.

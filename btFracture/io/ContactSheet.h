@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // A contact sheet: several frames reduced and laid out in a grid in one image.
 #include <btFracture/io/Image.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // FractureRB compatibility: the scene format of Hahn & Wojtan's FractureRB (a Bullet world file
 // plus a per-object parameter CSV), read into the same Scene the JSON path produces, so that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/io/FractureSceneWorldFactory.h>
 
 #include <btFracture/core/Log.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Builds a scene's world so that its breakable bodies break (paper §5): a btFractureDynamicsWorld
 // with the physical BemFractureEngine, a btFractureRigidBody for every dynamic body that the

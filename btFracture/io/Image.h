@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // An 8-bit RGB raster image (row-major, origin at the top-left corner) with the few drawing
 // operations the preview renderer and the plots need.

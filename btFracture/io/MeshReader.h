@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Loads a closed triangle mesh from a file and validates it.
 #include <btFracture/core/TriangleMesh.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Fragment volumes against Mott's distribution (paper §6, Fig. 8; Elek and Jaramaz 2008, Eq. 20):
 // the probability that a fragment has a volume of at least V is

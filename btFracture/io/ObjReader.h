@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Wavefront OBJ reader for triangle meshes.
 #include <btFracture/core/TriangleMesh.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Wavefront OBJ output: one file holding several named objects, or a single mesh.
 #include <btFracture/core/TriangleMesh.h>

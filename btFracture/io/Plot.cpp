@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/core/PortableMath.h>
 #include <btFracture/io/BitmapFont.h>
 #include <btFracture/io/Plot.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Minimal x-y charts as PNG-ready images: axes with ticks, linear or logarithmic scales, labelled
 // series (lines and/or markers) and a legend; used by the benchmarks' reports.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/io/PlyReader.h>
 
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // PNG files through libpng (8-bit RGB, no time stamp or other varying chunks, so the same image
 // always gives the same bytes).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/io/PolygonFan.h>
 
 #include <btFracture/core/Log.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Polygon faces of OBJ and PLY files become triangle fans from their first corner; the readers
 // count the split polygons and say so once per file.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/io/Rasterizer.h>
 
 #include <btFracture/core/Error.h>

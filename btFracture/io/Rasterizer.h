@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // A small software rasterizer for headless preview images: triangles with a z-buffer, flat or
 // Gouraud shading under one fixed light (from the upper left behind the camera, plus ambient),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Whole-file reading shared by the mesh and scene readers.
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Settings of the headless preview renderer (io/Rasterizer.h, io/ScenePreview.h); the scene
 // file's outputs.image.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/io/SceneFile.h>
 
 #include <btFracture/core/Error.h>
@@ -84,7 +85,8 @@ public:
     Scene parse(const Json& root) {
         Scene scene;
         requireObject(root, "", "the scene (a JSON object)");
-        allowOnly(root, "", {"description", "world", "bodies", "outputs", "effects"});
+        allowOnly(root, "", {"$schema", "description", "world", "bodies", "outputs", "effects"});
+        if (root.contains("$schema")) text(root["$schema"], "$schema");  // for editors (scene.schema.json)
         if (root.contains("description")) text(root["description"], "description");
         if (root.contains("world")) scene.world = world(root["world"], "world");
         if (!root.contains("bodies")) fail("bodies", "missing; expected an array of bodies");

@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Scene files for the headless runner: JSON parsed and validated into a plain Scene (SI units).
-// The format is documented with examples in demos/README.md. Every problem is a
+// The format is documented with examples in demos/README.md; demos/scenes/scene.schema.json
+// describes the same keys for editors (tests/io checks that the two agree). Every problem is a
 // btfracture::Error "<file>: <key path>: <what was expected>", e.g.
 //   column_bunny.json: bodies[2].shape.radius: expected a positive number [m], got -0.2
 // Unknown keys are errors too, so that a typo never silently falls back to a default.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/io/SceneFractureListener.h>
 
 #include <btFracture/dynamics/btFractureRigidBody.h>

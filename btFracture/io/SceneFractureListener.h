@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Keeps a SceneWorld's outputs in step with fracture: the recorder names the fragments and
 // writes the statistics row (FractureRecorderListener), then the scene's body list swaps the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Preview frames of a SceneWorld for the runner's PNG output: a fixed camera framing the
 // bodies' start positions, one colour per body, the frame's time as a label.

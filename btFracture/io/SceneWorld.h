@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // A Bullet world built from a Scene (io/SceneFile.h): rigid bodies only, in a
 // btDiscreteDynamicsWorld with btSequentialImpulseConstraintSolver.

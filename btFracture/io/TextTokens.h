@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Locale-independent tokenizing and number parsing for the text mesh formats.
 #include <string_view>

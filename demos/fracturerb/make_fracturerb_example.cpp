@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Writes the FractureRB-style example of demos/fracturerb/: a Bullet world file serialized with
 // btDefaultSerializer (as FractureRB's Maya exporter would leave it) and the per-object CSV.
 //

@@ -1,9 +1,11 @@
+// SPDX-License-Identifier: Zlib
 // btfracture-run: the headless runner. Reads a JSON scene (demos/README.md) or a FractureRB
 // .bullet + CSV pair, simulates it and writes the outputs the scene asks for (OBJ and PNG frames,
-// a contact sheet, fracture statistics), then prints a summary table.
+// a contact sheet, fracture statistics) and run.json, then prints a summary table. --check
+// validates the scene and its meshes and writes nothing.
 //
 // Exit codes (also in --help and demos/README.md):
-//   0  the run finished
+//   0  the run finished (--check: the scene is valid)
 //   1  internal failure while running (unexpected exception, an output file that cannot be written)
 //   2  bad input, rejected before simulating (command line, scene, meshes, CSV, output folder)
 //   3  the simulation turned non-finite (NaN or Inf); the run stopped there, outputs so far are kept
@@ -21,22 +23,28 @@
 #include <btFracture/io/FractureSceneWorldFactory.h>
 #include <btFracture/io/ObjWriter.h>
 #include <btFracture/io/PngFile.h>
+#include <btFracture/io/RunRecord.h>
 #include <btFracture/io/SceneFile.h>
 #include <btFracture/io/SceneFractureListener.h>
 #include <btFracture/io/ScenePreview.h>
 #include <btFracture/io/SceneWorld.h>
+#include <btFracture/io/Sha256.h>
 
 #include <btBulletDynamicsCommon.h>
+
+#include "RunnerVersion.h"  // generated: BTFRACTURE_VERSION, BTFRACTURE_SOURCE_REVISION
 
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -51,7 +59,8 @@ enum ExitCode { kSuccess = 0, kInternalFailure = 1, kBadInput = 2, kNonFinite = 
 
 const char* kUsage =
     "usage: btfracture-run SCENE [options]\n"
-    "       btfracture-run --fracturerb SCENE.bullet PARAMS.csv [options]\n";
+    "       btfracture-run --fracturerb SCENE.bullet PARAMS.csv [options]\n"
+    "       btfracture-run --version\n";
 
 const char* kHelp =
     "Simulates a btFracture scene headless and writes what the scene's effects.outputs ask for.\n"
@@ -62,7 +71,11 @@ const char* kHelp =
     "                 of Hahn & Wojtan's FractureRB (';'-separated, '%' comments); time step 1/250 s,\n"
     "                 1000 steps and outputs obj,csv,png unless overridden\n"
     "  --out DIR      output folder (default: the scene's outputs.directory, else out/<scene name>);\n"
-    "                 outputs of an earlier run in it (frame_*.obj, frame_*.png, ...) are removed\n"
+    "                 when the run starts writing, the files of an earlier run in it (frame_*.obj,\n"
+    "                 frame_*.png, statistics.csv, run.json, ...) are removed\n"
+    "  --check        validate the scene and its meshes (everything a run checks before it\n"
+    "                 simulates), print what was checked and exit: 0 valid, 2 not; writes and\n"
+    "                 deletes nothing\n"
     "  --steps N      simulate N frames instead of the scene's world.steps\n"
     "  --method M     fracture method of every breakable body: full (BEM with crack unknowns, Eq. 4),\n"
     "                 est (SIF estimator, paper section 4.2) or hybrid (full until the body's\n"
@@ -74,6 +87,7 @@ const char* kHelp =
     "  --outputs L    comma-separated subset of obj,vdb,csv,png, or none; replaces effects.outputs\n"
     "  --quiet        print only warnings and errors: no progress, no summary\n"
     "  --verbose      also print the debug log (every crack step: front nodes, K/K_c, arrests)\n"
+    "  --version      print the version and the source revision it was built from\n"
     "  --help         this text\n"
     "\n"
     "Progress goes to stderr: a bar on a terminal, a line every 10 % otherwise. The summary table\n"
@@ -84,11 +98,14 @@ const char* kHelp =
     "frame_NNNNN.png and contact_sheet.png (every outputs.png_every_n_steps), statistics.csv (one\n"
     "row per fracture event), fragments.csv and fragment_volumes.csv/.png (fragment volumes\n"
     "against Mott's distribution; written when something broke), levelset_<body>_NNN.vdb (the body's\n"
-    "OpenVDB level set right after each fracture event's cuts: grids <body>.object and <body>.cracks).\n"
+    "OpenVDB level set right after each fracture event's cuts: grids <body>.object and <body>.cracks),\n"
+    "run.json (what made the folder: version, source revision, command line, input files and their\n"
+    "SHA-256, seed, threads, overrides, start and end time, exit status, time per phase, event and\n"
+    "fragment counts, peak memory; written last).\n"
     "\n"
     "Exit status: 0 success, 1 internal failure while running, 2 bad input (command line, scene,\n"
     "mesh, CSV or output folder; nothing was simulated), 3 the simulation turned non-finite (NaN or\n"
-    "Inf) and stopped (outputs up to that step are kept).\n";
+    "Inf) and stopped (outputs up to that step are kept). --check exits 0 for a valid scene, 2 else.\n";
 
 struct Options {
     std::string scene;
@@ -101,7 +118,15 @@ struct Options {
     std::optional<SceneOutputFormats> outputs;
     bool quiet = false;
     bool verbose = false;  // debug log
+    bool check = false;    // validate only
+    std::vector<std::string> commandLine;
+    std::vector<std::pair<std::string, std::string>> overrides;  // options that replace scene values
 };
+
+std::string versionText() {
+    return std::string("btfracture-run ") + BTFRACTURE_VERSION + " (source " + BTFRACTURE_SOURCE_REVISION +
+           ", Bullet " + (sizeof(btScalar) == 8 ? "double" : "float") + ")";
+}
 
 long long integerOption(const std::string& option, const std::string& text, long long minimum,
                         long long maximum, const std::string& expected) {
@@ -140,16 +165,23 @@ SceneOutputFormats outputList(const std::string& text) {
 // Bad command lines are input errors (exit 2).
 Options parseOptions(int argc, char** argv) {
     Options options;
+    options.commandLine.assign(argv, argv + argc);
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto value = [&](const char* option) {
             if (i + 1 >= argc) throw Error(std::string(option) + " needs a value");
+            if (arg != "--fracturerb") options.overrides.emplace_back(option, argv[i + 1]);
             return std::string(argv[++i]);
         };
         if (arg == "--help" || arg == "-h") {
             std::fputs(kUsage, stdout);
             std::fputs(kHelp, stdout);
             std::exit(kSuccess);
+        } else if (arg == "--version") {
+            std::printf("%s\n", versionText().c_str());
+            std::exit(kSuccess);
+        } else if (arg == "--check") {
+            options.check = true;
         } else if (arg == "--out") {
             options.out = value("--out");
             if (options.out->empty()) throw Error("--out needs a non-empty folder");
@@ -199,7 +231,7 @@ bool isRunOutput(const fs::path& file) {
     if (name.rfind("frame_", 0) == 0 && (ext == ".obj" || ext == ".png")) return true;
     if (name.rfind("levelset_", 0) == 0 && ext == ".vdb") return true;
     for (const char* own : {"contact_sheet.png", "statistics.csv", "fragments.csv", "fragment_volumes.csv",
-                            "fragment_volumes.png"})
+                            "fragment_volumes.png", "run.json", "run.json.tmp"})
         if (name == own) return true;
     return false;
 }
@@ -348,8 +380,208 @@ Setup setUp(const Options& options) {
     return s;
 }
 
+// The files a run reads, with their SHA-256: the scene (or the FractureRB pair) and every mesh
+// file the scene names.
+std::vector<RunInput> inputFiles(const Options& options, const Scene& scene) {
+    std::vector<RunInput> inputs;
+    const auto add = [&](const char* role, const std::string& path) {
+        inputs.push_back({role, path, sha256OfFile(path)});
+    };
+    if (options.fractureRb) {
+        add("scene", options.fractureRb->first);
+        add("fracturerb_csv", options.fractureRb->second);
+    } else {
+        add("scene", options.scene);
+    }
+    std::set<std::string> meshes;
+    for (const SceneBody& body : scene.bodies)
+        if (!body.shape.meshFile.empty() && meshes.insert(body.shape.meshFile).second)
+            add("mesh", body.shape.meshFile);
+    return inputs;
+}
+
+// One run of a checked scene in `dir`: steps it, writes the outputs and the summary, and fills
+// `record` as it goes (so that a run that throws still says how far it got).
+int simulate(const Options& options, const Setup& setup, SceneWorld& world, const fs::path& dir,
+             std::optional<FractureRecorderListener>& recorderListener, const int& levelSetFiles,
+             const Timer& total, RunRecord& record) {
+    const Scene& scene = setup.scene;
+    const SceneOutputFormats& formats = scene.effects.outputs;
+    const ThreadLimit threads(scene.run.threads);
+    record.openmpThreads = ThreadLimit::openmpThreads();
+    record.tbbThreads = ThreadLimit::tbbThreads();
+
+    FractureRecorder recorder(formats.csv ? (dir / "statistics.csv").string() : std::string());
+    auto* fractureWorld = dynamic_cast<btFractureDynamicsWorld*>(&world.world());
+    std::optional<SceneFractureListener> sceneListener;
+    int breakable = 0;
+    if (fractureWorld) {
+        recorderListener.emplace(recorder, scene.world.dt / scene.world.substeps);
+        for (const auto& body : world.bodies())
+            if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody)) {
+                recorderListener->addOriginal(*b, body.name);
+                ++breakable;
+            }
+        sceneListener.emplace(*recorderListener, world);
+        fractureWorld->addFractureListener(&*sceneListener);
+    }
+    record.breakableBodies = breakable;
+    if (formats.vdb && breakable == 0)
+        logf(LogLevel::Warning, "btfracture-run: vdb output needs breakable bodies; none in this scene");
+
+    const int steps = scene.world.steps;
+    const int objEvery = formats.obj ? scene.outputs.objEveryNSteps : 0;
+    const int pngEvery = formats.png ? scene.outputs.pngEveryNSteps : 0;
+    std::optional<ScenePreview> preview;
+    if (pngEvery > 0) preview.emplace(world, scene.outputs.image);
+    // Contact sheet: at most 16 evenly spaced PNG frames, kept as thumbnails.
+    const int thumbnailWidth = std::max(16, scene.outputs.image.width / 4);
+    const int thumbnailHeight =
+        std::max(1, static_cast<int>(std::lround(static_cast<double>(scene.outputs.image.height) *
+                                                 thumbnailWidth / scene.outputs.image.width)));
+    const std::vector<size_t> sheetFrames =
+        contactSheetSelection(static_cast<size_t>(outputCount(pngEvery, steps)), 16);
+    std::vector<Image> thumbnails;
+    std::vector<std::string> thumbnailLabels;
+
+    const double setupSeconds = total.seconds();
+    double stepSeconds = 0.0, objSeconds = 0.0, renderSeconds = 0.0, pngSeconds = 0.0;
+    int objFrames = 0, pngFrames = 0, stepsTaken = 0;
+    // The record's counters and times, as they stand (after every step, and at the end).
+    const auto tally = [&] {
+        const double fractureSeconds = recorder.fractureSeconds() + recorder.swapSeconds();
+        record.stepsTaken = stepsTaken;
+        record.bodies = static_cast<int>(world.bodies().size());
+        record.fractureEvents = recorder.events();
+        record.seconds = {setupSeconds, stepSeconds - fractureSeconds, fractureSeconds,
+                          objSeconds + renderSeconds + pngSeconds, total.seconds()};
+    };
+    auto output = [&](int step) {
+        if (isOutputStep(step, objEvery, steps)) {
+            Timer timer;
+            ObjWriter writer((dir / frameName(objFrames++, "obj")).string());
+            for (size_t i = 0; i < world.bodies().size(); ++i)
+                writer.addObject(world.bodies()[i].name, world.worldSurface(i));
+            writer.close();
+            objSeconds += timer.seconds();
+        }
+        if (isOutputStep(step, pngEvery, steps)) {
+            Timer timer;
+            char label[64];
+            std::snprintf(label, sizeof label, "step %d  t = %.3f s", step, world.time());
+            Image frame = preview->render(world);
+            renderSeconds += timer.seconds();
+            timer.restart();
+            if (std::find(sheetFrames.begin(), sheetFrames.end(), static_cast<size_t>(pngFrames)) !=
+                sheetFrames.end()) {
+                thumbnails.push_back(frame.resized(thumbnailWidth, thumbnailHeight));
+                thumbnailLabels.push_back(format("t = %.3f s", world.time()));
+            }
+            preview->label(frame, label);
+            writePng((dir / frameName(pngFrames, "png")).string(), frame);
+            ++pngFrames;
+            pngSeconds += timer.seconds();
+        }
+    };
+
+    Progress progress(steps, !options.quiet);
+    std::string nonFinite;
+    output(0);
+    for (int step = 1; step <= steps; ++step) {
+        Timer timer;
+        world.stepFrame();
+        stepSeconds += timer.seconds();
+        stepsTaken = step;
+        for (const auto& body : world.bodies())
+            if (!finite(*body.rigidBody)) {
+                nonFinite = "body '" + body.name + "' became non-finite (NaN or Inf) at step " +
+                            std::to_string(step) + " (t = " + format("%.6g", world.time()) + " s)";
+                break;
+            }
+        tally();
+        if (!nonFinite.empty()) break;
+        output(step);
+        progress.update(step, world.time());
+    }
+    if (!nonFinite.empty()) progress.interrupt();
+
+    Timer finishing;
+    if (!thumbnails.empty())
+        writePng((dir / "contact_sheet.png").string(),
+                 contactSheet(thumbnails, thumbnailLabels, 4, thumbnailWidth));
+    if (fractureWorld) fractureWorld->finishEnergyAudits();
+    recorder.close();
+    const bool histogram =
+        formats.csv && recorder.writeFragmentVolumes((dir / "fragment_volumes").string(),
+                                                     (dir / "fragments.csv").string(), formats.png);
+    pngSeconds += finishing.seconds();
+    record.fragments = static_cast<int>(recorder.fragments().size());
+    tally();
+
+    std::vector<std::string>& written = record.outputs;
+    if (objFrames > 0)
+        written.push_back(
+            std::to_string(objFrames) + (objFrames == 1 ? " OBJ frame (every " : " OBJ frames (every ") +
+            std::to_string(objEvery) + " steps) frame_00000.obj .. " + frameName(objFrames - 1, "obj"));
+    if (pngFrames > 0)
+        written.push_back(
+            std::to_string(pngFrames) + (pngFrames == 1 ? " PNG frame (every " : " PNG frames (every ") +
+            std::to_string(pngEvery) + " steps) frame_00000.png .. " + frameName(pngFrames - 1, "png"));
+    if (!thumbnails.empty()) written.push_back("contact_sheet.png");
+    if (formats.csv) written.push_back("statistics.csv");
+    if (histogram) written.insert(written.end(), {"fragments.csv", "fragment_volumes.csv"});
+    if (histogram && formats.png) written.push_back("fragment_volumes.png");
+    if (levelSetFiles > 0)
+        written.push_back(std::to_string(levelSetFiles) + " fractured level set" +
+                          (levelSetFiles == 1 ? "" : "s") + " levelset_<body>_NNN.vdb");
+
+    if (!options.quiet) {
+        int dynamic = 0;
+        for (const auto& body : world.bodies()) dynamic += body.rigidBody->getInvMass() > 0 ? 1 : 0;
+        const RunRecord::Seconds& t = record.seconds;
+        Summary summary;
+        summary.add("steps", std::to_string(stepsTaken) +
+                                 (stepsTaken < steps ? " of " + std::to_string(steps) : "") +
+                                 format(" x %.4g s = %.4g s simulated", scene.world.dt, world.time()) + " (" +
+                                 std::to_string(scene.world.substeps) + " substep" +
+                                 (scene.world.substeps == 1 ? "" : "s") + " each)");
+        summary.add("bodies", std::to_string(record.bodies) + " (" + std::to_string(dynamic) + " dynamic, " +
+                                  std::to_string(record.bodies - dynamic) + " static or kinematic), " +
+                                  std::to_string(breakable) + " breakable");
+        summary.add("fracture events", std::to_string(record.fractureEvents));
+        summary.add("fragments", std::to_string(record.fragments));
+        summary.add("rigid-body time", format("%.2f s (%.3f ms per step)", t.rigidBody,
+                                              stepsTaken > 0 ? 1e3 * t.rigidBody / stepsTaken : 0.0));
+        summary.add("fracture time", format("%.2f s", t.fracture));
+        summary.add(
+            "output time",
+            format("%.2f s (OBJ %.2f s, PNG %.2f s", t.output, objSeconds, renderSeconds + pngSeconds) +
+                (pngFrames > 0 ? format("; %.1f ms render + %.1f ms encode per frame)",
+                                        1e3 * renderSeconds / pngFrames, 1e3 * pngSeconds / pngFrames)
+                               : std::string(")")));
+        summary.add("setup time", format("%.2f s", t.setup));
+        summary.add("wall time", format("%.2f s", total.seconds()));
+        summary.add("peak memory", format("%.1f MB (max resident set size)", peakMemoryMegabytes()));
+        summary.add("threads", std::to_string(record.openmpThreads) + " OpenMP, " +
+                                   std::to_string(record.tbbThreads) + " TBB");
+        std::string files;
+        for (const std::string& item : written) files += (files.empty() ? "" : ", ") + item;
+        summary.add("output", files.empty() ? "none but run.json in " + dir.string() + "/"
+                                            : dir.string() + "/ : " + files + ", run.json");
+        summary.print(setup.title);
+    }
+    if (!nonFinite.empty()) {
+        record.stopReason = nonFinite;
+        std::fprintf(stderr, "btfracture-run: stopped: %s\n", nonFinite.c_str());
+        return kNonFinite;
+    }
+    return kSuccess;
+}
+
 int run(const Options& options) {
     Timer total;
+    RunRecord record;
+    record.startTime = utcTimestamp(std::chrono::system_clock::now());
     Setup setup;
     std::optional<SceneWorld> world;
     std::optional<FractureRecorderListener> recorderListener;
@@ -372,165 +604,60 @@ int run(const Options& options) {
         const SceneWorldFactory plainFactory;
         const SceneWorldFactory& factory =
             anyBreakable(setup.scene) ? static_cast<const SceneWorldFactory&>(fractureFactory) : plainFactory;
-        world.emplace(setup.scene, factory);  // loads and checks every mesh before anything is written
+        world.emplace(setup.scene, factory);  // loads and checks every mesh
+        if (options.check) {
+            int breakable = 0, meshes = 0;
+            for (const SceneBody& body : setup.scene.bodies) {
+                breakable += body.fracture.fracturable ? 1 : 0;
+                meshes += body.shape.meshFile.empty() ? 0 : 1;
+            }
+            std::printf(
+                "btfracture-run: %s: valid (%zu bodies, %d breakable, %d mesh files checked); nothing "
+                "written\n",
+                setup.title.c_str(), setup.scene.bodies.size(), breakable, meshes);
+            return kSuccess;
+        }
+        record.inputs = inputFiles(options, setup.scene);
+        // The run starts writing: its folder is created and an earlier run's files leave it.
         dir = prepareOutput(setup.directory.string());
     } catch (const Error& e) {
         std::fprintf(stderr, "btfracture-run: error: %s\n", e.what());
         return kBadInput;
     }
     const Scene& scene = setup.scene;
-    const SceneOutputFormats& formats = scene.effects.outputs;
-    const ThreadLimit threads(scene.run.threads);
+    record.program = "btfracture-run";
+    record.version = BTFRACTURE_VERSION;
+    record.sourceRevision = BTFRACTURE_SOURCE_REVISION;
+    record.commandLine = options.commandLine;
+    std::error_code cwdError;
+    record.workingDirectory = fs::current_path(cwdError).string();
+    record.bulletPrecision = sizeof(btScalar) == 8 ? "double" : "float";
+    record.seed = scene.effects.seed;
+    record.threadsRequested = scene.run.threads;
+    record.overrides = options.overrides;
+    record.stepsRequested = scene.world.steps;
+    record.dt = scene.world.dt;
+    record.substeps = scene.world.substeps;
 
-    FractureRecorder recorder(formats.csv ? (dir / "statistics.csv").string() : std::string());
-    auto* fractureWorld = dynamic_cast<btFractureDynamicsWorld*>(&world->world());
-    std::optional<SceneFractureListener> sceneListener;
-    int breakable = 0;
-    if (fractureWorld) {
-        recorderListener.emplace(recorder, scene.world.dt / scene.world.substeps);
-        for (const auto& body : world->bodies())
-            if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody)) {
-                recorderListener->addOriginal(*b, body.name);
-                ++breakable;
-            }
-        sceneListener.emplace(*recorderListener, *world);
-        fractureWorld->addFractureListener(&*sceneListener);
+    int status = kSuccess;
+    try {
+        status = simulate(options, setup, *world, dir, recorderListener, levelSetFiles, total, record);
+    } catch (const std::exception& e) {
+        status = kInternalFailure;
+        record.stopReason = std::string("internal failure: ") + e.what();
+        std::fprintf(stderr, "btfracture-run: internal failure: %s\n", e.what());
     }
-    if (formats.vdb && breakable == 0)
-        logf(LogLevel::Warning, "btfracture-run: vdb output needs breakable bodies; none in this scene");
-
-    const int steps = scene.world.steps;
-    const int objEvery = formats.obj ? scene.outputs.objEveryNSteps : 0;
-    const int pngEvery = formats.png ? scene.outputs.pngEveryNSteps : 0;
-    std::optional<ScenePreview> preview;
-    if (pngEvery > 0) preview.emplace(*world, scene.outputs.image);
-    // Contact sheet: at most 16 evenly spaced PNG frames, kept as thumbnails.
-    const int thumbnailWidth = std::max(16, scene.outputs.image.width / 4);
-    const int thumbnailHeight =
-        std::max(1, static_cast<int>(std::lround(static_cast<double>(scene.outputs.image.height) *
-                                                 thumbnailWidth / scene.outputs.image.width)));
-    const std::vector<size_t> sheetFrames =
-        contactSheetSelection(static_cast<size_t>(outputCount(pngEvery, steps)), 16);
-    std::vector<Image> thumbnails;
-    std::vector<std::string> thumbnailLabels;
-
-    const double setupSeconds = total.seconds();
-    double stepSeconds = 0.0, objSeconds = 0.0, renderSeconds = 0.0, pngSeconds = 0.0;
-    int objFrames = 0, pngFrames = 0;
-    auto output = [&](int step) {
-        if (isOutputStep(step, objEvery, steps)) {
-            Timer timer;
-            ObjWriter writer((dir / frameName(objFrames++, "obj")).string());
-            for (size_t i = 0; i < world->bodies().size(); ++i)
-                writer.addObject(world->bodies()[i].name, world->worldSurface(i));
-            writer.close();
-            objSeconds += timer.seconds();
-        }
-        if (isOutputStep(step, pngEvery, steps)) {
-            Timer timer;
-            char label[64];
-            std::snprintf(label, sizeof label, "step %d  t = %.3f s", step, world->time());
-            Image frame = preview->render(*world);
-            renderSeconds += timer.seconds();
-            timer.restart();
-            if (std::find(sheetFrames.begin(), sheetFrames.end(), static_cast<size_t>(pngFrames)) !=
-                sheetFrames.end()) {
-                thumbnails.push_back(frame.resized(thumbnailWidth, thumbnailHeight));
-                thumbnailLabels.push_back(format("t = %.3f s", world->time()));
-            }
-            preview->label(frame, label);
-            writePng((dir / frameName(pngFrames, "png")).string(), frame);
-            ++pngFrames;
-            pngSeconds += timer.seconds();
-        }
-    };
-
-    Progress progress(steps, !options.quiet);
-    std::string nonFinite;
-    int stepsTaken = 0;
-    output(0);
-    for (int step = 1; step <= steps; ++step) {
-        Timer timer;
-        world->stepFrame();
-        stepSeconds += timer.seconds();
-        stepsTaken = step;
-        for (const auto& body : world->bodies())
-            if (!finite(*body.rigidBody)) {
-                nonFinite = "body '" + body.name + "' became non-finite (NaN or Inf) at step " +
-                            std::to_string(step) + " (t = " + format("%.6g", world->time()) + " s)";
-                break;
-            }
-        if (!nonFinite.empty()) break;
-        output(step);
-        progress.update(step, world->time());
+    record.exitStatus = status;
+    record.endTime = utcTimestamp(std::chrono::system_clock::now());
+    record.seconds.total = total.seconds();
+    record.peakMemoryMegabytes = peakMemoryMegabytes();
+    try {
+        writeRunRecord((dir / "run.json").string(), record);
+    } catch (const Error& e) {
+        std::fprintf(stderr, "btfracture-run: internal failure: %s\n", e.what());
+        return kInternalFailure;
     }
-    if (!nonFinite.empty()) progress.interrupt();
-
-    Timer finishing;
-    if (!thumbnails.empty())
-        writePng((dir / "contact_sheet.png").string(),
-                 contactSheet(thumbnails, thumbnailLabels, 4, thumbnailWidth));
-    if (fractureWorld) fractureWorld->finishEnergyAudits();
-    recorder.close();
-    const bool histogram =
-        formats.csv && recorder.writeFragmentVolumes((dir / "fragment_volumes").string(),
-                                                     (dir / "fragments.csv").string(), formats.png);
-    pngSeconds += finishing.seconds();
-
-    if (!options.quiet) {
-        int dynamic = 0;
-        for (const auto& body : world->bodies()) dynamic += body.rigidBody->getInvMass() > 0 ? 1 : 0;
-        const int bodies = static_cast<int>(world->bodies().size());
-        const double fractureSeconds = recorder.fractureSeconds() + recorder.swapSeconds();
-        Summary summary;
-        summary.add("steps", std::to_string(stepsTaken) +
-                                 (stepsTaken < steps ? " of " + std::to_string(steps) : "") +
-                                 format(" x %.4g s = %.4g s simulated", scene.world.dt, world->time()) +
-                                 " (" + std::to_string(scene.world.substeps) + " substep" +
-                                 (scene.world.substeps == 1 ? "" : "s") + " each)");
-        summary.add("bodies", std::to_string(bodies) + " (" + std::to_string(dynamic) + " dynamic, " +
-                                  std::to_string(bodies - dynamic) + " static or kinematic), " +
-                                  std::to_string(breakable) + " breakable");
-        summary.add("fracture events", std::to_string(recorder.events()));
-        summary.add("fragments", std::to_string(recorder.fragments().size()));
-        summary.add("rigid-body time",
-                    format("%.2f s (%.3f ms per step)", stepSeconds - fractureSeconds,
-                           stepsTaken > 0 ? 1e3 * (stepSeconds - fractureSeconds) / stepsTaken : 0.0));
-        summary.add("fracture time", format("%.2f s", fractureSeconds));
-        summary.add("output time",
-                    format("%.2f s (OBJ %.2f s, PNG %.2f s", objSeconds + renderSeconds + pngSeconds,
-                           objSeconds, renderSeconds + pngSeconds) +
-                        (pngFrames > 0 ? format("; %.1f ms render + %.1f ms encode per frame)",
-                                                1e3 * renderSeconds / pngFrames, 1e3 * pngSeconds / pngFrames)
-                                       : std::string(")")));
-        summary.add("setup time", format("%.2f s", setupSeconds));
-        summary.add("wall time", format("%.2f s", total.seconds()));
-        summary.add("peak memory", format("%.1f MB (max resident set size)", peakMemoryMegabytes()));
-        summary.add("threads", std::to_string(ThreadLimit::openmpThreads()) + " OpenMP, " +
-                                   std::to_string(ThreadLimit::tbbThreads()) + " TBB");
-        std::string written;
-        auto item = [&](const std::string& text) { written += (written.empty() ? "" : ", ") + text; };
-        if (objFrames > 0)
-            item(std::to_string(objFrames) + (objFrames == 1 ? " OBJ frame (every " : " OBJ frames (every ") +
-                 std::to_string(objEvery) + " steps) frame_00000.obj .. " + frameName(objFrames - 1, "obj"));
-        if (pngFrames > 0)
-            item(std::to_string(pngFrames) + (pngFrames == 1 ? " PNG frame (every " : " PNG frames (every ") +
-                 std::to_string(pngEvery) + " steps) frame_00000.png .. " + frameName(pngFrames - 1, "png") +
-                 ", contact_sheet.png");
-        if (formats.csv)
-            item(std::string("statistics.csv") + (histogram ? ", fragments.csv, fragment_volumes.csv" : ""));
-        if (histogram && formats.png) item("fragment_volumes.png");
-        if (levelSetFiles > 0)
-            item(std::to_string(levelSetFiles) + " fractured level set" + (levelSetFiles == 1 ? "" : "s") +
-                 " levelset_<body>_NNN.vdb");
-        summary.add("output", written.empty() ? "none" : dir.string() + "/ : " + written);
-        summary.print(setup.title);
-    }
-    if (!nonFinite.empty()) {
-        std::fprintf(stderr, "btfracture-run: stopped: %s\n", nonFinite.c_str());
-        return kNonFinite;
-    }
-    return kSuccess;
+    return status;
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Pure-Neumann solutions against analytic elasticity: the patch tests (uniaxial tension and
 // hydrostatic pressure of a box), Lame's sphere under pressure with mesh refinement, the
 // surface/interior stress hand-over, the far-triangle quadrature of the interior stress,

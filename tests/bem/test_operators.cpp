@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Galerkin operators: symmetry, rigid-body null space, the Kupradze form of the double layer
 // behind F, and bit-identical parallel assembly.
 #include <btFracture/bem/BoundaryOperators.h>

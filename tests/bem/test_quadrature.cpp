@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Quadrature: line and triangle rules are exact on polynomials, the Sauter-Schwab maps tile the
 // reference pair exactly, and singular 1/r integrals match a semi-analytic evaluation.
 #include <btFracture/bem/PairIntegrals.h>

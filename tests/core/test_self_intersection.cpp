@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/core/Error.h>
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/SelfIntersection.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Test scenes for the Bullet coupling: a ground box, a fracturable glass slab resting on it and
 // a steel ball thrown down at it, in a btFractureDynamicsWorld with the plane-split engine (or

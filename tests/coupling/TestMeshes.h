@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Closed test meshes: prisms over simple polygons (the non-convex L shape).
 #include <btFracture/core/TriangleMesh.h>

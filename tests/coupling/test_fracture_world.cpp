@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // The Bullet coupling end to end with the plane-split stand-in engine (PlaneSplitFractureEngine).
 #include "CouplingScene.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Principal axes of a mass-property tensor and libccd penetration (helpers the coupling uses).
 #include <btFracture/core/Error.h>
 #include <btFracture/core/MassProperties.h>

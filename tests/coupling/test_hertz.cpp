@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/core/Error.h>
 #include <btFracture/dynamics/HertzContact.h>
 

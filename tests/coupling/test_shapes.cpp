@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include "TestMeshes.h"
 
 #include <btFracture/core/MassProperties.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Closed test meshes with known geometry, and the demo meshes scaled to a physical size.
 #include <btFracture/core/Primitives.h>
@@ -10,6 +11,9 @@
 #include <string>
 
 namespace btfracture::test {
+
+// Triangles of the fragments' collision meshes in these tests (LevelSetBody::fragments).
+constexpr int kCollisionTriangles = 2000;
 
 // Axis-aligned box [lo, hi], 12 outward triangles (core's makeBox, moved).
 inline TriangleMesh box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,

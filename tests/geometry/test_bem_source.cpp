@@ -1,4 +1,5 @@
-// BEM sources of curved fragments (§5.3, issue 6): a bunny cut by a bent crack sheet and an
+// SPDX-License-Identifier: Zlib
+// BEM sources of curved fragments (§5.3): a bunny cut by a bent crack sheet and an
 // incomplete crack; each breakable piece's LevelSetBody::bemSourceMesh must be a closed,
 // manifold, intersection-free surface of the piece's volume that remeshForBem turns into a
 // valid BEM mesh near the target count.
@@ -45,7 +46,7 @@ TEST(BemSource, CurvedFragmentsGetClosedIntersectionFreeBemMeshes) {
     // (filled in the BEM source, carried as a crack).
     bunny.cutAlongSurface(test::sheet({-0.01, 0.025, 0.0}, {0, 0.008, 0}, {0, 0, 0.012}, "incomplete crack"),
                           2);
-    const std::vector<Fragment> pieces = bunny.fragments(FragmentSettings());
+    const std::vector<Fragment> pieces = bunny.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_GE(pieces.size(), 2u);
     const int target = 500;
     int checked = 0;

@@ -1,4 +1,5 @@
-// Convex hulls (btConvexHullComputer) and libccd penetration between hulls (GJK + EPA).
+// SPDX-License-Identifier: Zlib
+// Convex hulls (exact quickhull) and libccd penetration between hulls (GJK + EPA).
 #include "TestShapes.h"
 
 #include <btFracture/core/Error.h>
@@ -26,18 +27,23 @@ void expectContains(const TriangleMesh& hull, const std::vector<Eigen::Vector3d>
     }
 }
 
+// The hull of `points` is the box of volume `volume` spanned by eight of them.
+void expectBoxHull(const std::vector<Eigen::Vector3d>& points, double volume, double tolerance) {
+    const TriangleMesh hull = convexHullMesh(points, "box");
+    EXPECT_EQ(hull.vertices.size(), 8u);
+    const MeshDefects d = inspectMesh(hull);
+    EXPECT_TRUE(d.isClosedManifold()) << d.describe();
+    EXPECT_NEAR(d.signedVolume, volume, tolerance);
+    expectContains(hull, points, tolerance);
+}
+
 TEST(ConvexHull, BoxWithInteriorPointsIsTheBox) {
     std::vector<Eigen::Vector3d> points = boxCorners({0.1, 0.2, 0.3});
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (int i = 0; i < 500; ++i) points.emplace_back(0.1 * u(rng), 0.2 * u(rng), 0.3 * u(rng));
-    const TriangleMesh hull = convexHullMesh(points, "box cloud");
-    EXPECT_EQ(hull.vertices.size(), 8u);
-    const MeshDefects d = inspectMesh(hull);
-    EXPECT_TRUE(d.isClosedManifold()) << d.describe();
-    EXPECT_NEAR(d.signedVolume, 0.2 * 0.4 * 0.6, 1e-12);
-    expectContains(hull, points, 1e-12);
-    for (const auto& v : hull.vertices)
+    expectBoxHull(points, 0.2 * 0.4 * 0.6, 1e-12);
+    for (const auto& v : convexHullMesh(points, "box cloud").vertices)
         EXPECT_EQ(v.cwiseAbs(), Eigen::Vector3d(0.1, 0.2, 0.3));  // input points, exactly
 }
 
@@ -47,6 +53,42 @@ TEST(ConvexHull, SphereHullContainsAllPoints) {
     EXPECT_TRUE(inspectMesh(hull).isClosedManifold());
     EXPECT_EQ(hull.vertices.size(), sphere.vertices.size());
     expectContains(hull, sphere.vertices, 1e-12);
+}
+
+// Lattice points are coplanar and collinear in every direction and each one is given twice:
+// every orientation test there is exact, and the hull is still the box of the corners.
+TEST(ConvexHull, LatticeWithDuplicatesIsItsBoundingBox) {
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 4; ++j)
+            for (int k = 0; k < 3; ++k) {
+                points.emplace_back(0.1 * i, 0.1 * j, 0.1 * k);
+                points.emplace_back(0.1 * i, 0.1 * j, 0.1 * k);
+            }
+    expectBoxHull(points, 0.4 * 0.3 * 0.2, 1e-15);
+}
+
+// Voxel corners of an ellipsoid (what a thin fragment's hull is made of): closed, convex, holds
+// every corner.
+TEST(ConvexHull, VoxelCornersOfAnEllipsoid) {
+    std::vector<Eigen::Vector3d> points;
+    const Eigen::Vector3d origin(0.1234, -0.77, 0.3);
+    const double voxel = 0.013;
+    for (int i = -20; i <= 20; ++i)
+        for (int j = -15; j <= 15; ++j)
+            for (int k = -8; k <= 8; ++k) {
+                if (i * i / 400.0 + j * j / 225.0 + k * k / 64.0 > 1.0) continue;
+                for (int c = 0; c < 8; ++c)
+                    points.push_back(origin + voxel * Eigen::Vector3d(i + (c & 1 ? 0.5 : -0.5),
+                                                                      j + (c & 2 ? 0.5 : -0.5),
+                                                                      k + (c & 4 ? 0.5 : -0.5)));
+            }
+    const TriangleMesh hull = convexHullMesh(points, "voxels");
+    const MeshDefects d = inspectMesh(hull);
+    EXPECT_TRUE(d.isClosedManifold()) << d.describe();
+    EXPECT_TRUE(isConvex(hull));
+    expectContains(hull, points, 1e-15);
+    EXPECT_EQ(convexHullMesh(points, "voxels").vertices, hull.vertices);  // deterministic
 }
 
 TEST(ConvexHull, DegenerateInputIsRejected) {
@@ -64,8 +106,7 @@ ConvexPolytope placed(const std::vector<Eigen::Vector3d>& points, const Eigen::I
     return p;
 }
 
-// Acceptance (issue 5): the penetration depth between two overlapping box hulls matches the
-// hand-computed value.
+// The penetration depth between two overlapping box hulls matches the hand-computed value.
 TEST(ConvexPenetration, OverlappingBoxHullsGiveHandComputedDepth) {
     const auto unit = convexHullMesh(boxCorners({0.5, 0.5, 0.5}), "unit box").vertices;
     const ConvexPolytope a = placed(unit, Eigen::Isometry3d::Identity());

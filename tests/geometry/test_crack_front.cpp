@@ -1,11 +1,12 @@
-// The high-resolution crack front (issue 5, paper §3): marker spacing, arrest at the surface and
+// SPDX-License-Identifier: Zlib
+// The high-resolution crack front (paper §3): marker spacing, arrest at the surface and
 // at other cracks, the swept surface cut into a level set, determinism.
 #include "TestShapes.h"
 
 #include <btFracture/core/Error.h>
 #include <btFracture/fracture/CrackFront.h>
+#include <btFracture/fracture/LevelSetFrontQueries.h>
 #include <btFracture/geometry/LevelSetBody.h>
-#include <btFracture/geometry/LevelSetFrontQueries.h>
 
 #include <gtest/gtest.h>
 
@@ -188,7 +189,7 @@ TEST(CrackFront, FrontReachingTheSurfaceArrestsThere) {
         for (const auto& p : mesh.vertices) EXPECT_LE((p - centre).norm() - R, 1.0 * voxel);
 }
 
-// Where the markers put the coarse nodes (issue 5, FrontAdvanceResult::coarseTargets): in free
+// Where the markers put the coarse nodes (FrontAdvanceResult::coarseTargets): in free
 // space within half a voxel of where each aimed (a penny of 16 nodes, radius 4 -> 40 voxels; the
 // smoothed markers round the 16-gon's corners, 0.27 voxel after 24 steps); at a sphere's surface,
 // where the markers stopped. A coarse node whose markers all stopped ends level with that point
@@ -346,7 +347,7 @@ TEST(CrackFront, FrontsExtendedTogetherMeetInsteadOfCrossing) {
 // coarse front crosses the thickness, its two nodes grow 45 degrees out of the faces and slide
 // along them (emulated: clamped just inside, as CrackGrowth does). With the surface normal the
 // markers slide too: they stay inside, no coarse node is stopped, and the swept surface spans the
-// plate's thickness wherever the crack has passed. Without it they stop 0.75 voxel past the faces
+// plate's thickness wherever the crack has passed. Without it they end 0.75 voxel past the faces
 // along their 45-degree direction (0.53 voxel outside).
 TEST(CrackFront, MarkersSlideAlongTheFacesOfAThinPlate) {
     const double voxel = 1e-3, h = 4.0 * voxel, inset = 0.2 * voxel, speed = 1.5 * voxel;
@@ -620,7 +621,7 @@ int growUntilArrested(CrackFronts& fronts, int sheet, CoarseFront& coarse, const
     return -1;
 }
 
-// Acceptance (issue 5): a crack grown by the markers from a seed in the box's oblique plane
+// A crack grown by the markers from a seed in the box's oblique plane
 // (the plane of test_fragments' oblique cut) and cut into the level set splits the box into 2
 // fragments within 1 % of the analytic split.
 TEST(CrackFrontLevelSet, SweptSurfaceCutSplitsTheBoxAnalytically) {
@@ -639,7 +640,7 @@ TEST(CrackFrontLevelSet, SweptSurfaceCutSplitsTheBoxAnalytically) {
     TriangleMesh cut = fronts.takeSwept().at(0);
     cut.name = "marker cut";
     box.cutAlongSurface(cut, 0);
-    const auto pieces = box.fragments(FragmentSettings());
+    const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(pieces.size(), 2u);
     const double volume = kBoxSize.prod(), left = kBoxSize.y() * kBoxSize.z() * c.x(), right = volume - left;
     std::printf(
@@ -675,7 +676,7 @@ TEST(CrackFrontLevelSet, FrontMeetingAnExistingCrackStops) {
     for (const auto& p : cut.vertices) EXPECT_LT(p.y() - y0, 1.0 * kVoxel);
     cut.name = "marker cut";
     box.cutAlongSurface(cut, 0);
-    const auto pieces = box.fragments(FragmentSettings());
+    const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(pieces.size(), 3u);
     const double z = kBoxSize.z();
     std::vector<double> expected = {kBoxSize.x() * (kBoxSize.y() - y0) * z, (kBoxSize.x() - x0) * y0 * z,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Quadric edge-collapse decimation: closed, manifold, near the target, shape kept.
 #include "TestShapes.h"
 
@@ -32,7 +33,7 @@ TEST(MeshDecimation, BoxCollapsesToFewTrianglesWithoutChangingShape) {
     EXPECT_NEAR(d.signedVolume / 3e-4, 1.0, 0.03);
 }
 
-// Acceptance (issue 5): collision meshes are closed and manifold (bunny, armadillo).
+// Collision meshes are closed and manifold (bunny, armadillo).
 TEST(MeshDecimation, CollisionMeshesOfBunnyAndArmadilloAreClosedManifolds) {
     for (const auto& [file, size] :
          {std::pair<const char*, double>{"bunny.obj", 0.15}, {"armadillo.obj", 0.3}}) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Crack cuts, segmentation into fragments, volume classes (§5.2) and incomplete cracks (§5.3).
 #include "TestShapes.h"
 
@@ -52,7 +53,7 @@ void expectClosedManifold(const TriangleMesh& mesh) {
 
 TEST(Fragments, UncutBodyIsOneFragmentKeepingItsSolver) {
     const LevelSetBody box = makeBox();
-    const auto pieces = box.fragments(FragmentSettings());
+    const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(pieces.size(), 1u);
     EXPECT_NEAR(pieces[0].mass.volume / box.massProperties().volume, 1.0, 1e-6);
     EXPECT_EQ(pieces[0].volumeClass, FragmentClass::KeepsParentSolver);
@@ -60,7 +61,7 @@ TEST(Fragments, UncutBodyIsOneFragmentKeepingItsSolver) {
     ASSERT_TRUE(pieces[0].levelSet);
 }
 
-// Acceptance (issue 5): a planar cut through a box gives exactly 2 fragments whose volumes add up
+// A planar cut through a box gives exactly 2 fragments whose volumes add up
 // to the original within the voxel tolerance and match the analytic split within 1 %.
 TEST(Fragments, ObliquePlanarCutSplitsBoxIntoTwoAnalyticPieces) {
     LevelSetBody box = makeBox();
@@ -81,7 +82,7 @@ TEST(Fragments, ObliquePlanarCutSplitsBoxIntoTwoAnalyticPieces) {
     EXPECT_TRUE(box.isInsideObject(c - 3 * kVoxel * n));
     EXPECT_EQ(box.crackAt(c - 3 * kVoxel * n), -1);
 
-    const auto pieces = box.fragments(FragmentSettings());
+    const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(pieces.size(), 2u);
     const double sum = pieces[0].mass.volume + pieces[1].mass.volume;
     std::printf(
@@ -107,7 +108,7 @@ TEST(Fragments, ObliquePlanarCutSplitsBoxIntoTwoAnalyticPieces) {
         expectClosedManifold(f.visualMesh);
         expectClosedManifold(f.surfaceMesh);
         expectClosedManifold(f.convexHull);
-        EXPECT_LE(static_cast<int>(f.collisionMesh.triangles.size()), FragmentSettings().collisionTriangles);
+        EXPECT_LE(static_cast<int>(f.collisionMesh.triangles.size()), test::kCollisionTriangles);
         ASSERT_TRUE(f.levelSet);
         EXPECT_TRUE(f.levelSet->crackIds().empty());
         EXPECT_NEAR(f.levelSet->massProperties().volume, f.mass.volume, 1e-12);
@@ -129,7 +130,7 @@ TEST(Fragments, AxisAlignedCutMatchesAnalyticSplitAndCentres) {
     LevelSetBody box = makeBox();
     const double x = 0.0407;
     box.cutAlongSurface(test::sheet({x, 0.03, 0.025}, {0, 0.05, 0}, {0, 0, 0.05}), 0);
-    const auto pieces = box.fragments(FragmentSettings());
+    const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(pieces.size(), 2u);
     const double area = kBoxSize.y() * kBoxSize.z();
     EXPECT_NEAR(pieces[0].mass.volume / (area * (kBoxSize.x() - x)), 1.0, 0.01);
@@ -152,7 +153,7 @@ TEST(Fragments, ChipsAFewVoxelsAcrossKeepTheirVolumeAndGetAHull) {
     for (const double voxels : {2.0, 2.5, 3.0, 3.5}) {
         LevelSetBody cube(test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(side), "cube"), voxel);
         cutCorner(cube, voxels * voxel, Eigen::Vector3d::Zero(), 1);
-        const auto pieces = cube.fragments(FragmentSettings());
+        const auto pieces = cube.fragments(FragmentSettings(), test::kCollisionTriangles);
         double sum = 0.0;
         for (const Fragment& f : pieces) {
             sum += f.mass.volume;
@@ -184,7 +185,7 @@ TEST(Fragments, CrossingCracksGiveFourAnalyticPieces) {
     const double x = 0.0437, y = 0.0252;
     box.cutAlongSurface(test::sheet({x, 0.03, 0.025}, {0, 0.05, 0}, {0, 0, 0.05}, "x crack"), 1);
     box.cutAlongSurface(test::sheet({0.05, y, 0.025}, {0.07, 0, 0}, {0, 0, 0.05}, "y crack"), 2);
-    const auto pieces = box.fragments(FragmentSettings());
+    const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(pieces.size(), 4u);
     const double z = kBoxSize.z();
     std::vector<double> expected = {(kBoxSize.x() - x) * (kBoxSize.y() - y) * z, x * (kBoxSize.y() - y) * z,
@@ -201,14 +202,14 @@ TEST(Fragments, CrossingCracksGiveFourAnalyticPieces) {
     EXPECT_NEAR(sum / box.massProperties().volume, 1.0, 0.005);
 }
 
-// Acceptance (issue 5): a cut stopped halfway leaves one fragment, which carries the incomplete
+// A cut stopped halfway leaves one fragment, which carries the incomplete
 // crack (§5.3); finishing the crack in that fragment's own body splits it.
 TEST(Fragments, CutStoppedHalfwayLeavesOneFragmentWithAnIncompleteCrack) {
     LevelSetBody box = makeBox();
     const double x = 0.05;
     // Sheet covers y in [-0.01, 0.03]: half of the 6 cm section.
     box.cutAlongSurface(test::sheet({x, 0.01, 0.025}, {0, 0.02, 0}, {0, 0, 0.04}, "half crack"), 3);
-    const auto pieces = box.fragments(FragmentSettings());
+    const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(pieces.size(), 1u);
     const Fragment& f = pieces[0];
     EXPECT_EQ(f.incompleteCracks, std::vector<int>{3});
@@ -233,7 +234,7 @@ TEST(Fragments, CutStoppedHalfwayLeavesOneFragmentWithAnIncompleteCrack) {
     EXPECT_EQ(child.crackAt({x, 0.01, 0.025}), 0);
     // The crack grows through the rest of the section later (§5.3: old cracks keep growing).
     child.cutAlongSurface(test::sheet({x, 0.05, 0.025}, {0, 0.025, 0}, {0, 0, 0.04}, "rest of crack"), 0);
-    const auto halves = child.fragments(FragmentSettings());
+    const auto halves = child.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(halves.size(), 2u);
     for (const Fragment& h : halves) {
         EXPECT_TRUE(h.incompleteCracks.empty());
@@ -253,7 +254,7 @@ TEST(Fragments, AChipBetweenCloseCutsIsClaimedByNoOtherPiece) {
     const double x0 = 32.0 * kVoxel, x1 = 34.2 * kVoxel;
     box.cutAlongSurface(test::sheet({x0, 0.03, 0.025}, {0, 0.04, 0}, {0, 0, 0.035}, "first plane"), 1);
     box.cutAlongSurface(test::sheet({x1, 0.03, 0.025}, {0, 0.04, 0}, {0, 0, 0.035}, "second plane"), 2);
-    const auto pieces = box.fragments(FragmentSettings());
+    const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
     double sum = 0.0;
     for (const Fragment& f : pieces) sum += f.mass.volume;
     std::printf("%zu pieces, volumes sum to %+.3f %% of the box\n", pieces.size(),
@@ -262,7 +263,7 @@ TEST(Fragments, AChipBetweenCloseCutsIsClaimedByNoOtherPiece) {
     EXPECT_NEAR(sum / box.massProperties().volume, 1.0, 0.005);
     for (const Fragment& f : pieces) {
         if (!f.levelSet) continue;
-        const auto own = f.levelSet->fragments(FragmentSettings());
+        const auto own = f.levelSet->fragments(FragmentSettings(), test::kCollisionTriangles);
         std::printf("%s: %.2f %% of the box, its own level set in %zu piece(s)\n", f.name.c_str(),
                     100.0 * f.fractionOfOriginal, own.size());
         EXPECT_EQ(own.size(), 1u) << f.name;
@@ -277,7 +278,7 @@ TEST(Fragments, VolumeClassesOnConstructedCase) {
     cutCorner(cube, a, Eigen::Vector3d::Zero(), 1);
     cutCorner(cube, b, Eigen::Vector3d::Constant(side), 2);
     cube.cutAlongSurface(test::sheet({x, 0.5 * side, 0.5 * side}, {0, 0.6 * side, 0}, {0, 0, 0.6 * side}), 3);
-    const auto pieces = cube.fragments(FragmentSettings());
+    const auto pieces = cube.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(pieces.size(), 4u);
     const double v = side * side * side;
     const double expected[4] = {x * side * side - a * a * a, (side - x) * side * side - b * b * b, b * b * b,
@@ -305,7 +306,7 @@ TEST(Fragments, VolumeClassesOnConstructedCase) {
     LevelSetBody cube2(test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(side), "cube"),
                        side / 64);
     cutCorner(cube2, a, Eigen::Vector3d::Zero(), 1);
-    const auto two = cube2.fragments(FragmentSettings());
+    const auto two = cube2.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(two.size(), 2u);
     EXPECT_EQ(two[0].volumeClass, FragmentClass::KeepsParentSolver);
     EXPECT_EQ(two[1].volumeClass, FragmentClass::ConvexHull);
@@ -326,9 +327,7 @@ TEST(Fragments, ClassifyFragmentThresholdsAreSettings) {
     s.unbreakableMaxFraction = 0.005;
     EXPECT_THROW(s.validate(), Error);
     EXPECT_THROW(classifyFragment(0.0, 1.0, 1.0, FragmentSettings()), Error);
-    FragmentSettings bad;
-    bad.collisionTriangles = 2;
-    EXPECT_THROW(makeBox().fragments(bad), Error);
+    EXPECT_THROW(makeBox().fragments(FragmentSettings(), 2), Error);  // collision meshes of 2 triangles
 }
 
 // Same input, same output: bit for bit, whether OpenVDB and the integrals run on one thread or many.
@@ -336,7 +335,7 @@ TEST(Fragments, SegmentationIsDeterministicAndThreadCountIndependent) {
     auto run = [] {
         LevelSetBody box = makeBox();
         box.cutAlongSurface(test::sheet({0.06, 0.03, 0.025}, {0.01, 0.05, 0}, {0, 0.01, 0.05}), 0);
-        return box.fragments(FragmentSettings());
+        return box.fragments(FragmentSettings(), test::kCollisionTriangles);
     };
     std::vector<Fragment> serial;
     {
@@ -368,7 +367,7 @@ TEST(Fragments, BadCrackSheetsAreRejectedAndMissesChangeNothing) {
     EXPECT_THROW(box.cutAlongSurface(nan, 0), Error);
     box.cutAlongSurface(test::sheet({0.5, 0.5, 0.5}, {0, 0.05, 0}, {0, 0, 0.05}), 0);  // far away
     EXPECT_TRUE(box.crackIds().empty());
-    EXPECT_EQ(box.fragments(FragmentSettings()).size(), 1u);
+    EXPECT_EQ(box.fragments(FragmentSettings(), test::kCollisionTriangles).size(), 1u);
 }
 
 }  // namespace

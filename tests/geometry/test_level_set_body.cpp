@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // LevelSetBody: mass properties against exact polyhedral integrals, queries and curvature.
 #include "TestShapes.h"
 
@@ -35,7 +36,7 @@ MassErrors compare(const MassProperties& measured, const MassProperties& exact, 
     return e;
 }
 
-// Acceptance (issue 5): volume within 0.5 %, centre of mass within half a voxel, inertia within
+// Volume within 0.5 %, centre of mass within half a voxel, inertia within
 // 1 % at the default voxel size (128 voxels across the longest side).
 void expectLevelSetMatchesMesh(const std::string& file, double size) {
     const TriangleMesh mesh = test::demoMesh(file, size);

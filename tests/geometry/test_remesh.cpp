@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // BEM remeshing (geometry/Remesh.h) and its parts: half-edge edits, closest-point queries,
 // quality measures and surface distances.
 #include <btFracture/core/ClosestPoint.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Zlib
 # Re-generates the FractureRB example with its generator and checks that the committed files
 # are exactly what it writes (the generator is deterministic).
 #   GENERATOR  make_fracturerb_example   WORK_DIR  scratch folder   EXPECTED_DIR  demos/fracturerb

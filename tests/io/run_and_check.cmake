@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Zlib
 # Runs the runner and checks its exit code and output; used by the runner.* CTest tests.
 #   RUNNER    executable          EXPECTED  exit code
 #   ARGS      arguments, separated by '|'

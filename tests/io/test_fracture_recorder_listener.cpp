@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // The plumbing from a btFractureDynamicsWorld to the runner's records: a real fracture event
 // (the plane-split stand-in engine breaking a glass slab under a steel ball) becomes one
 // statistics row, and the fragments get the recorder's stable names and volumes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // FractureRB compatibility: the shipped example, every shape kind the reader converts (written
 // here with btDefaultSerializer), and clear errors for malformed parameter rows.
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Charts (io/Plot.h): series land where their data say on linear and log axes, in their colour,
 // non-positive values are left out on log axes, and the output is deterministic.
 #include <btFracture/io/BitmapFont.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // The preview renderer: silhouettes against analytic projected areas, depth order, lighting,
 // determinism, PNG round trips and contact sheets.
 #include <btFracture/core/Error.h>

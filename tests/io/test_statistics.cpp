@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Fracture statistics: the CSV writer, fragment naming and bookkeeping, and the fragment-volume
 // comparison against Mott's distribution.
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Internal to btFracture/geometry: the OpenVDB grids behind LevelSetBody and the helpers its two
 // OpenVDB translation units share (LevelSetBody.cpp, LevelSetFragments.cpp). Includes OpenVDB,

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Zlib
 """Writes the same cube (side 2, centred at the origin, 6 outward quads) as ascii, binary
 little-endian and binary big-endian PLY, with extra properties and elements that a reader must
 skip. cube.obj holds the same cube in OBJ's other face forms. CC0-1.0, part of btFracture's tests."""

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // What the voxel-resolution crack fronts (fracture/CrackFront.h) ask of a level-set body: inside
 // its uncut solid, which cut crack is at a point, the solid's surface normal. The body must

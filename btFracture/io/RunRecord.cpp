@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: Zlib
+#include <btFracture/io/RunRecord.h>
+
+#include <btFracture/core/Error.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+
+namespace btfracture {
+
+std::string utcTimestamp(std::chrono::system_clock::time_point time) {
+    const std::time_t t = std::chrono::system_clock::to_time_t(time);
+    std::tm utc{};
+    gmtime_r(&t, &utc);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+    return text;
+}
+
+void writeRunRecord(const std::string& path, const RunRecord& r) {
+    nlohmann::ordered_json j;
+    j["program"] = r.program;
+    j["version"] = r.version;
+    j["source_revision"] = r.sourceRevision;
+    j["command_line"] = r.commandLine;
+    j["working_directory"] = r.workingDirectory;
+    j["scene"] = nlohmann::ordered_json::object();
+    j["inputs"] = nlohmann::ordered_json::array();
+    for (const RunInput& input : r.inputs) {
+        nlohmann::ordered_json file = {{"role", input.role}, {"path", input.path}, {"sha256", input.sha256}};
+        if (input.role == "scene" && j["scene"].empty())
+            j["scene"] = {{"path", input.path}, {"sha256", input.sha256}};
+        j["inputs"].push_back(file);
+    }
+    j["bullet_precision"] = r.bulletPrecision;
+    j["seed"] = r.seed;
+    j["threads"] = {{"requested", r.threadsRequested}, {"openmp", r.openmpThreads}, {"tbb", r.tbbThreads}};
+    j["overrides"] = nlohmann::ordered_json::object();
+    for (const auto& [option, value] : r.overrides) j["overrides"][option] = value;
+    j["steps"] = {
+        {"requested", r.stepsRequested}, {"taken", r.stepsTaken}, {"dt_s", r.dt}, {"substeps", r.substeps}};
+    j["start_time"] = r.startTime;
+    j["end_time"] = r.endTime;
+    j["exit_status"] = r.exitStatus;
+    if (!r.stopReason.empty()) j["stop_reason"] = r.stopReason;
+    j["seconds"] = {{"setup", r.seconds.setup},
+                    {"rigid_body", r.seconds.rigidBody},
+                    {"fracture", r.seconds.fracture},
+                    {"output", r.seconds.output},
+                    {"total", r.seconds.total}};
+    j["bodies"] = r.bodies;
+    j["breakable_bodies"] = r.breakableBodies;
+    j["fracture_events"] = r.fractureEvents;
+    j["fragments"] = r.fragments;
+    j["peak_memory_mb"] = r.peakMemoryMegabytes;
+    j["outputs"] = r.outputs;
+
+    const std::string temporary = path + ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out << j.dump(2) << '\n';
+        out.close();
+        if (!out) throw Error("cannot write '" + temporary + "': " + std::strerror(errno));
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const std::string reason = std::strerror(errno);
+        std::remove(temporary.c_str());
+        throw Error("cannot rename '" + temporary + "' to '" + path + "': " + reason);
+    }
+}
+
+}  // namespace btfracture

@@ -1,0 +1,137 @@
+# SPDX-License-Identifier: Zlib
+# The module graph of docs/DESIGN.md, checked over every #include of the library's sources:
+#   cmake -DSOURCE_DIR=<tree> -P CheckLayering.cmake
+# reads <tree>/btFracture/**/*.{h,cpp} and <tree>/btFracture/PublicHeaders.cmake, prints every
+# include against the graph and fails when there is one. Run by `make test` (CTest
+# core.layering); core.layering_rejects runs it on tests/core/layering, a tree with one
+# forbidden include of each kind.
+#
+# Rules:
+#  - a module includes only the modules below it:
+#      core <- bem, geometry <- fracture <- dynamics <- io    (fracture uses bem and geometry)
+#  - external libraries per module: Bullet only in dynamics and io; OpenVDB only in geometry's
+#    .cpp files and geometry/internal/; libccd only in geometry, TBB in core and geometry;
+#    nlohmann-json and libpng only in io;
+#  - btFracture/<module>/internal/ headers only from their own module;
+#  - the public headers (PublicHeaders.cmake, the installed set) include only public headers,
+#    the C++ library, Eigen and Bullet;
+#  - includes use angle brackets (<btFracture/...>), so that every one is seen here.
+cmake_minimum_required(VERSION 3.20)
+if(NOT SOURCE_DIR)
+  message(FATAL_ERROR "CheckLayering.cmake: give -DSOURCE_DIR=<tree holding btFracture/>")
+endif()
+get_filename_component(SOURCE_DIR "${SOURCE_DIR}" ABSOLUTE)
+set(root "${SOURCE_DIR}/btFracture")
+if(NOT EXISTS "${root}/PublicHeaders.cmake")
+  message(FATAL_ERROR "CheckLayering.cmake: ${root}/PublicHeaders.cmake not found")
+endif()
+include("${root}/PublicHeaders.cmake")  # BTFRACTURE_PUBLIC_HEADERS, relative to btFracture/
+
+# Modules each module may include (itself included); "api" is btFracture/btFracture.h.
+set(modules_core core)
+set(modules_bem bem core)
+set(modules_geometry geometry core)
+set(modules_fracture fracture bem geometry core)
+set(modules_dynamics dynamics fracture geometry bem core)
+set(modules_io io dynamics fracture geometry bem core)
+set(modules_api api dynamics geometry core)
+# External libraries each module may include.
+set(libraries_core tbb)
+set(libraries_bem "")
+set(libraries_geometry openvdb ccd tbb)
+set(libraries_fracture "")
+set(libraries_dynamics bullet)
+set(libraries_io bullet json png)
+set(libraries_api bullet)
+# How an include names each library.
+set(pattern_bullet "^(bt[A-Z][A-Za-z0-9]*\\.h|LinearMath/|BulletCollision/|BulletDynamics/|BulletSoftBody/|BulletWorldImporter/|BulletFileLoader/|HACD/|GIMPACTUtils/|ConvexDecomposition/)")
+set(pattern_openvdb "^openvdb/")
+set(pattern_ccd "^ccd/")
+set(pattern_tbb "^(tbb|oneapi)/")
+set(pattern_json "^nlohmann/")
+set(pattern_png "^png\\.h$")
+set(libraries bullet openvdb ccd tbb json png)
+set(name_bullet Bullet)
+set(name_openvdb OpenVDB)
+set(name_ccd libccd)
+set(name_tbb TBB)
+set(name_json nlohmann-json)
+set(name_png libpng)
+
+set(problems "")
+macro(violation file text)
+  string(APPEND problems "  btFracture/${file}: ${text}\n")
+endmacro()
+
+foreach(header IN LISTS BTFRACTURE_PUBLIC_HEADERS)
+  if(NOT EXISTS "${root}/${header}")
+    violation("${header}" "listed in PublicHeaders.cmake but missing")
+  endif()
+endforeach()
+
+file(GLOB_RECURSE files RELATIVE "${root}" "${root}/*.h" "${root}/*.cpp")
+list(SORT files)
+foreach(file IN LISTS files)
+  if(file MATCHES "^([^/]+)/")
+    set(module "${CMAKE_MATCH_1}")
+  else()
+    set(module api)
+  endif()
+  if(NOT DEFINED modules_${module})
+    violation("${file}" "is in no module of the graph (core bem geometry fracture dynamics io)")
+    continue()
+  endif()
+  list(FIND BTFRACTURE_PUBLIC_HEADERS "${file}" public_index)
+  set(internal_file OFF)
+  if(file MATCHES "/internal/")
+    set(internal_file ON)
+  endif()
+  file(STRINGS "${root}/${file}" includes REGEX "^[ \t]*#[ \t]*include")
+  foreach(line IN LISTS includes)
+    if(line MATCHES "#[ \t]*include[ \t]*\"([^\"]*)\"")
+      violation("${file}" "includes \"${CMAKE_MATCH_1}\": use <btFracture/...> or <library/...>")
+      continue()
+    endif()
+    if(NOT line MATCHES "#[ \t]*include[ \t]*<([^>]*)>")
+      continue()
+    endif()
+    set(target "${CMAKE_MATCH_1}")
+    if(target MATCHES "^btFracture/(.*)$")
+      set(path "${CMAKE_MATCH_1}")
+      if(path MATCHES "^([^/]+)/")
+        set(other "${CMAKE_MATCH_1}")
+      else()
+        set(other api)
+      endif()
+      if(NOT other IN_LIST modules_${module})
+        string(REPLACE ";" ", " allowed "${modules_${module}}")
+        violation("${file}" "includes <${target}>: ${module} may include only ${allowed}")
+      endif()
+      if(path MATCHES "^([^/]+)/internal/" AND NOT CMAKE_MATCH_1 STREQUAL module)
+        violation("${file}" "includes <${target}>: internal to ${CMAKE_MATCH_1}")
+      endif()
+      if(public_index GREATER -1 AND NOT path IN_LIST BTFRACTURE_PUBLIC_HEADERS)
+        violation("${file}" "is public and includes <${target}>, which is not (PublicHeaders.cmake)")
+      endif()
+      continue()
+    endif()
+    foreach(library IN LISTS libraries)
+      if(target MATCHES "${pattern_${library}}")
+        if(NOT library IN_LIST libraries_${module})
+          violation("${file}" "includes <${target}>: ${module} must not use ${name_${library}}")
+        elseif(public_index GREATER -1 AND NOT library STREQUAL "bullet")
+          violation("${file}" "is public and includes <${target}> (${name_${library}})")
+        elseif(library STREQUAL "openvdb" AND file MATCHES "\\.h$" AND NOT internal_file)
+          violation("${file}" "includes <${target}>: OpenVDB only in .cpp files and ${module}/internal/")
+        endif()
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+
+if(problems)
+  message(FATAL_ERROR "includes against the module graph (docs/DESIGN.md):\n${problems}")
+endif()
+list(LENGTH files count)
+list(LENGTH BTFRACTURE_PUBLIC_HEADERS public_count)
+message(STATUS "layering: ${count} files follow the module graph; ${public_count} public headers are closed")

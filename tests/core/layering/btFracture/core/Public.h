@@ -1,0 +1,3 @@
+// SPDX-License-Identifier: Zlib
+#pragma once
+#include <btFracture/core/Private.h>

@@ -1,0 +1,2 @@
+// SPDX-License-Identifier: Zlib
+#include <btFracture/geometry/internal/Grids.h>

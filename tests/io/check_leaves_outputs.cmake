@@ -1,0 +1,31 @@
+# SPDX-License-Identifier: Zlib
+# `btfracture-run SCENE --check --out OUT` exits with EXPECTED (0 valid, 2 bad input) and
+# neither writes nor deletes anything in OUT (CTest runner.check_*).
+#   RUNNER, EXPECTED, ARGS (separated by '|'), OUT, STDOUT / STDERR (regular expressions)
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}")
+foreach(name frame_00000.obj frame_00001.png statistics.csv run.json)
+  file(WRITE "${OUT}/${name}" "output of an earlier run: ${name}\n")
+endforeach()
+file(GLOB_RECURSE before RELATIVE "${OUT}" "${OUT}/*")
+set(ARGS "${ARGS}|--check|--out|${OUT}|--outputs|obj,csv,png,vdb")
+include(${CMAKE_CURRENT_LIST_DIR}/run_and_check.cmake)  # exit code, stdout, stderr; sets `args`, `report`
+file(GLOB_RECURSE after RELATIVE "${OUT}" "${OUT}/*")
+if(NOT before STREQUAL after)
+  message(FATAL_ERROR "--check changed the files in ${OUT}: before '${before}', after '${after}'\n${report}")
+endif()
+foreach(name frame_00000.obj frame_00001.png statistics.csv run.json)
+  file(READ "${OUT}/${name}" text)
+  if(NOT text STREQUAL "output of an earlier run: ${name}\n")
+    message(FATAL_ERROR "--check changed ${name}\n${report}")
+  endif()
+endforeach()
+# A folder that does not exist is not created either.
+file(REMOVE_RECURSE "${OUT}/absent")
+list(FIND args "${OUT}" at)
+list(REMOVE_AT args ${at})
+list(INSERT args ${at} "${OUT}/absent")
+execute_process(COMMAND "${RUNNER}" ${args} OUTPUT_QUIET ERROR_QUIET)
+if(EXISTS "${OUT}/absent")
+  message(FATAL_ERROR "--check created its --out folder")
+endif()
