@@ -8,9 +8,12 @@
 // equilateral triangle with area A / targetTriangles (A = sqrt(3)/4 L^2): split edges longer
 // than 4/3 L, collapse edges shorter than 4/5 L, flip edges towards valence 6, relax vertices
 // tangentially, project them onto the input surface; L is corrected every iteration so the
-// triangle count meets the target. A repair pass then removes the triangles that are still
-// below the angle bound (QualityRepair.h). Sharp edges and corners of the input are not
-// tracked: they end up rounded over a width of about L.
+// triangle count meets the target. Where the input is thin and bends (a wall's rim, a handle,
+// two parts close together) the target length is shorter than L there and grades back to L
+// (ThicknessSizing.h), so that the two sides of a thin part stay apart without small elements
+// everywhere. A repair pass then removes the triangles that are still below the angle bound
+// (QualityRepair.h). Sharp edges and corners of the input are not tracked: they end up rounded
+// over a width of about the local target length.
 #include <btFracture/core/TriangleMesh.h>
 
 namespace btfracture {
@@ -26,6 +29,10 @@ struct RemeshOptions {
     // Rounds that halve the target edge length around triangles that smoothing could not
     // separate, >= 0; each costs a few remeshing iterations over the whole mesh.
     int maxRefinements = 3;
+    // Shorter edges where the input is thin and bends (ThicknessSizing.h); off: uniform L.
+    bool adaptToThickness = true;
+    // Wall-clock limit [s] for the whole remesh, > 0; checked between iterations and passes.
+    double timeBudgetSeconds = 60.0;
 };
 
 // Remeshes a closed, manifold, consistently oriented triangle mesh (core/MeshCheck.h) to about
@@ -35,7 +42,8 @@ struct RemeshOptions {
 // oriented like the input, lies on the input surface up to the repair pass's relaxations, and
 // has the input's genus. Deterministic.
 // Throws btfracture::Error naming input.name for an input that is not a closed manifold, a
-// target below 20 triangles, or options out of range.
+// target below 20 triangles, options out of range, or a remesh that outlasts
+// options.timeBudgetSeconds.
 TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const RemeshOptions& options = {});
 
 }  // namespace btfracture
