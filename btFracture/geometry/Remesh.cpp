@@ -23,6 +23,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <queue>
 #include <sstream>
 #include <utility>
@@ -283,17 +284,21 @@ struct RemeshPass {
     double edgeLength;  // the base target length at the end
 };
 
+enum class Sizing {
+    WithinTarget,   // the sites' lengths follow the base length the triangle count steers to
+    Uniform,        // no sites: one base length
+    ThinPartsOwn,   // the sites keep their lengths; the base grows at most kMaxBaseGrowth times
+};
+
 // Isotropic remeshing, the angle repair and the separation of intersecting triangles (with
-// local refinement where smoothing cannot separate them). withinTarget: the sites' lengths
-// follow the base length the triangle count steers to; else they keep their own and the base
-// grows at most kMaxBaseGrowth times.
-RemeshPass remeshPass(const RemeshContext& context, bool withinTarget) {
+// local refinement where smoothing cannot separate them).
+RemeshPass remeshPass(const RemeshContext& context, Sizing sizing) {
     const auto& [input, surface, targetTriangles, options, uniformBase, sites, source, budget] = context;
     RemeshPass pass{HalfEdgeMesh(input), {}, {}, 0.0};
     HalfEdgeMesh& mesh = pass.mesh;
     EdgeLengthField field(uniformBase);
-    field.setSites(sites, uniformBase, kGrading, withinTarget);
-    const bool capped = !withinTarget && !sites.empty();
+    if (sizing != Sizing::Uniform) field.setSites(sites, uniformBase, kGrading, sizing == Sizing::WithinTarget);
+    const bool capped = sizing == Sizing::ThinPartsOwn && !sites.empty();
     for (int iteration = 0; iteration < options.iterations; ++iteration) {
         remeshIteration(mesh, surface, field, options.smoothingStep);
         if (iteration + 2 < options.iterations) steerCount(mesh, field, targetTriangles, uniformBase, capped);
@@ -358,27 +363,39 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
 
     // Edge length of equilateral triangles that tile the area with the target count.
     const double uniformBase = std::sqrt(4.0 * area / (std::sqrt(3.0) * targetTriangles));
+    using Mode = RemeshOptions::ThicknessSizing;
     std::vector<SizingSite> sites;
-    if (options.adaptToThickness) {
-        sites = thicknessSizingSites(surface, uniformBase);
-        if (!sites.empty())
+    const RemeshContext context{input, surface, targetTriangles, options, uniformBase, sites, source, budget};
+    std::vector<Sizing> order;
+    if (options.thicknessSizing == Mode::Never) order = {Sizing::Uniform};
+    if (options.thicknessSizing == Mode::WhenUniformFails)
+        order = {Sizing::Uniform, Sizing::WithinTarget, Sizing::ThinPartsOwn};
+    if (options.thicknessSizing == Mode::Always) order = {Sizing::WithinTarget, Sizing::Uniform, Sizing::ThinPartsOwn};
+    // The first pass without intersections is kept, else the one with fewest. A sized pass
+    // within the target takes triangles from the thick parts for the thin ones; one with the
+    // thin parts' own lengths lets the count grow beyond the target.
+    std::optional<RemeshPass> best;
+    bool sized = false;
+    for (const Sizing sizing : order) {
+        if (best && best->untangle.remainingPairs == 0) break;
+        if (sizing != Sizing::Uniform && !sized) {
+            sized = true;
+            sites = thicknessSizingSites(surface, uniformBase);
             logf(LogLevel::Info, source, ": ", sites.size(),
                  " places where the surface is thin and bends ask for edges shorter than ", uniformBase, " (",
                  budget.seconds(), " s)");
-        budget.check("the thickness sizing");
+            budget.check("the thickness sizing");
+        }
+        if (sizing != Sizing::Uniform && sites.empty()) continue;
+        if (best)
+            logf(LogLevel::Info, source, ": ", best->untangle.remainingPairs, " pairs of intersecting triangles; ",
+                 sizing == Sizing::Uniform        ? "remeshing with a uniform edge length"
+                 : sizing == Sizing::WithinTarget ? "remeshing with shorter edges at thin parts"
+                                                  : "remeshing with the thin parts' own edge lengths beyond the target");
+        RemeshPass pass = remeshPass(context, sizing);
+        if (!best || pass.untangle.remainingPairs < best->untangle.remainingPairs) best = std::move(pass);
     }
-    const RemeshContext context{input, surface, targetTriangles, options, uniformBase, sites, source, budget};
-    // Within the budget first: the sites' lengths follow the base the count steers to. Where
-    // that leaves intersections, the thin parts get the lengths they ask for and the count
-    // grows beyond the target.
-    RemeshPass pass = remeshPass(context, true);
-    if (pass.untangle.remainingPairs > 0 && !sites.empty()) {
-        logf(LogLevel::Info, source, ": ", pass.untangle.remainingPairs,
-             " pairs of intersecting triangles within the target of ", targetTriangles,
-             "; remeshing with the thin parts' own edge lengths beyond it");
-        RemeshPass unbounded = remeshPass(context, false);
-        if (unbounded.untangle.remainingPairs < pass.untangle.remainingPairs) pass = std::move(unbounded);
-    }
+    RemeshPass& pass = *best;
     HalfEdgeMesh& mesh = pass.mesh;
     const IntersectionSmoothingResult& untangle = pass.untangle;
     const QualityRepairResult& repair = pass.repair;
