@@ -71,9 +71,10 @@ int ClosestPointTree::build(int first, int count) {
 }
 
 template <class Accept>
-ClosestPointTree::Hit ClosestPointTree::search(const Eigen::Vector3d& query, Accept&& accept) const {
+ClosestPointTree::Hit ClosestPointTree::search(const Eigen::Vector3d& query, Accept&& accept,
+                                               double maxSquaredDistance) const {
     Hit best;
-    best.squaredDistance = std::numeric_limits<double>::infinity();
+    best.squaredDistance = maxSquaredDistance;
     int stack[128];
     int top = 0;
     stack[top++] = 0;
@@ -112,13 +113,21 @@ ClosestPointTree::Hit ClosestPointTree::search(const Eigen::Vector3d& query, Acc
 }
 
 ClosestPointTree::Hit ClosestPointTree::closestPoint(const Eigen::Vector3d& query) const {
-    return search(query, [](int) { return true; });
+    return search(query, [](int) { return true; }, std::numeric_limits<double>::infinity());
 }
 
 ClosestPointTree::Hit ClosestPointTree::closestPoint(const Eigen::Vector3d& query,
                                                      const Eigen::Vector3d& normal, double minCosine) const {
-    const Hit hit = search(query, [&](int t) { return normals_[t].dot(normal) >= minCosine; });
+    const Hit hit = search(
+        query, [&](int t) { return normals_[t].dot(normal) >= minCosine; }, std::numeric_limits<double>::infinity());
     return hit.triangle >= 0 ? hit : closestPoint(query);
+}
+
+ClosestPointTree::Hit ClosestPointTree::closestPointWithin(const Eigen::Vector3d& query,
+                                                           const Eigen::Vector3d& normal, double minCosine,
+                                                           double maxDistance) const {
+    return search(
+        query, [&](int t) { return normals_[t].dot(normal) >= minCosine; }, maxDistance * maxDistance);
 }
 
 }  // namespace btfracture

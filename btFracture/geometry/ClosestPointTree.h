@@ -29,6 +29,10 @@ public:
     // that a point on one side of a thin part is not pulled onto the other side. Falls back to
     // closestPoint(query) when no triangle qualifies.
     Hit closestPoint(const Eigen::Vector3d& query, const Eigen::Vector3d& normal, double minCosine) const;
+    // The same without the fallback, among the points closer than maxDistance: triangle -1 when
+    // no qualifying triangle comes that close.
+    Hit closestPointWithin(const Eigen::Vector3d& query, const Eigen::Vector3d& normal, double minCosine,
+                           double maxDistance) const;
 
     const TriangleMesh& mesh() const { return mesh_; }
     // Unit outward normal of a triangle (zero for a degenerate one).
@@ -43,7 +47,7 @@ private:
     };
     int build(int first, int count);
     template <class Accept>
-    Hit search(const Eigen::Vector3d& query, Accept&& accept) const;
+    Hit search(const Eigen::Vector3d& query, Accept&& accept, double maxSquaredDistance) const;
 
     TriangleMesh mesh_;
     std::vector<Eigen::Vector3d> normals_;

@@ -14,6 +14,7 @@
 #include <btFracture/geometry/QualityRepair.h>
 #include <btFracture/geometry/RemeshEdits.h>
 #include <btFracture/geometry/SurfaceFit.h>
+#include <btFracture/geometry/ThicknessSizing.h>
 
 #include <Eigen/Geometry>
 
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <queue>
 #include <sstream>
 #include <utility>
@@ -44,6 +46,8 @@ constexpr int kMaxIntersectionRounds = 20;
 // iterations follow.
 constexpr double kRefinementRadius = 2.0;
 constexpr int kRefinementIterations = 5;
+// Target lengths grow by at most this much per unit distance away from a thin part.
+constexpr double kGrading = 0.5;
 
 void splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const EdgeLengthField& field) {
     // Longest edge first: its new edges are then at most sqrt(3)/2 as long as it was (median
@@ -151,10 +155,17 @@ void remeshIteration(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const 
     mesh.compact();
 }
 
-// Steers the triangle count to the target: faces scale with 1 / L^2.
-void steerCount(const HalfEdgeMesh& mesh, EdgeLengthField& field, int targetTriangles) {
+// Steers the triangle count to the target: faces scale with 1 / L^2. With `capped`, the base
+// length grows to at most kMaxBaseGrowth times the one of a uniform mesh (and the sites keep
+// their lengths): where thin parts ask for more triangles than the target leaves them, the
+// count then stays above the target.
+constexpr double kMaxBaseGrowth = 2.0;
+void steerCount(const HalfEdgeMesh& mesh, EdgeLengthField& field, int targetTriangles, double uniformBase,
+                bool capped) {
     const double ratio = static_cast<double>(mesh.faceCount()) / targetTriangles;
-    field.setBase(field.base() * std::clamp(std::sqrt(ratio), 0.8, 1.25));
+    double base = field.base() * std::clamp(std::sqrt(ratio), 0.8, 1.25);
+    if (capped) base = std::min(base, kMaxBaseGrowth * uniformBase);
+    field.setBase(base);
 }
 
 // Centres of the triangles that intersect others (mesh compacted: face f is triangle f).
@@ -194,7 +205,31 @@ void requireValidArguments(const std::string& source, int targetTriangles, const
     if (!(options.smoothingStep > 0.0 && options.smoothingStep <= 1.0))
         throw Error(source + ": RemeshOptions.smoothingStep must be in (0, 1], got " +
                     std::to_string(options.smoothingStep));
+    if (!(options.timeBudgetSeconds > 0.0))
+        throw Error(source + ": RemeshOptions.timeBudgetSeconds must be > 0, got " +
+                    std::to_string(options.timeBudgetSeconds));
 }
+
+// Throws once a remesh has used up its time budget, naming the stage it was in.
+class RemeshBudget {
+public:
+    RemeshBudget(std::string source, int targetTriangles, double seconds)
+        : source_(std::move(source)), target_(targetTriangles), seconds_(seconds) {}
+    void check(const char* stage) const {
+        if (timer_.seconds() <= seconds_) return;
+        std::ostringstream message;
+        message << source_ << ": BEM remesh at " << target_ << " triangles ran out of its time budget of "
+                << seconds_ << " s during " << stage << " (" << timer_.seconds() << " s)";
+        throw Error(message.str());
+    }
+    double seconds() const { return timer_.seconds(); }
+
+private:
+    std::string source_;
+    int target_;
+    double seconds_;
+    Timer timer_;
+};
 
 // Drops the edge-connected components of fewer than 4 triangles (no closed surface has fewer: a
 // speck of the input that the collapses shrank to two coincident zero-area triangles) and the
@@ -231,34 +266,58 @@ int dropSpecks(TriangleMesh& mesh) {
     return dropped;
 }
 
-}  // namespace
+struct RemeshContext {
+    const TriangleMesh& input;
+    const ClosestPointTree& surface;
+    int targetTriangles;
+    const RemeshOptions& options;
+    double uniformBase;
+    const std::vector<SizingSite>& sites;
+    const std::string& source;
+    const RemeshBudget& budget;
+};
 
-TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const RemeshOptions& options) {
-    const std::string source = input.name.empty() ? std::string("<unnamed mesh>") : input.name;
-    requireValidArguments(source, targetTriangles, options);
-    const Timer timer;
-    HalfEdgeMesh mesh(input);  // throws unless closed, manifold and oriented
-    const ClosestPointTree surface(input);
-    const double area = surfaceArea(input);
-    if (!(area > 0.0) || !std::isfinite(area))
-        throw Error(source + ": cannot remesh a surface of area " + std::to_string(area));
+struct RemeshPass {
+    HalfEdgeMesh mesh;
+    IntersectionSmoothingResult untangle;
+    QualityRepairResult repair;
+    double edgeLength;  // the base target length at the end
+};
 
-    // Edge length of equilateral triangles that tile the area with the target count.
-    EdgeLengthField field(std::sqrt(4.0 * area / (std::sqrt(3.0) * targetTriangles)));
+enum class Sizing {
+    WithinTarget,   // the sites' lengths follow the base length the triangle count steers to
+    Uniform,        // no sites: one base length
+    ThinPartsOwn,   // the sites keep their lengths; the base grows at most kMaxBaseGrowth times
+};
+
+// Isotropic remeshing, the angle repair and the separation of intersecting triangles (with
+// local refinement where smoothing cannot separate them).
+RemeshPass remeshPass(const RemeshContext& context, Sizing sizing) {
+    const auto& [input, surface, targetTriangles, options, uniformBase, sites, source, budget] = context;
+    RemeshPass pass{HalfEdgeMesh(input), {}, {}, 0.0};
+    HalfEdgeMesh& mesh = pass.mesh;
+    EdgeLengthField field(uniformBase);
+    if (sizing != Sizing::Uniform) field.setSites(sites, uniformBase, kGrading, sizing == Sizing::WithinTarget);
+    const bool capped = sizing == Sizing::ThinPartsOwn && !sites.empty();
     for (int iteration = 0; iteration < options.iterations; ++iteration) {
         remeshIteration(mesh, surface, field, options.smoothingStep);
-        if (iteration + 2 < options.iterations) steerCount(mesh, field, targetTriangles);
+        if (iteration + 2 < options.iterations) steerCount(mesh, field, targetTriangles, uniformBase, capped);
+        budget.check("isotropic remeshing");
     }
-    double edgeLength = field.base();
+    double& edgeLength = pass.edgeLength;
+    edgeLength = field.base();
 
     const double minAngle = options.minAngleDegrees * M_PI / 180.0;
-    QualityRepairResult repair = repairSmallAngles(mesh, surface, minAngle, edgeLength, options.repairPasses);
+    QualityRepairResult& repair = pass.repair;
+    repair = repairSmallAngles(mesh, surface, minAngle, edgeLength, options.repairPasses);
+    budget.check("the angle repair");
     // Self-intersections: smooth them apart; where that fails, the surface there is too close to
     // itself for the edge length, so halve the target length around them and remesh again.
-    IntersectionSmoothingResult untangle;
+    IntersectionSmoothingResult& untangle = pass.untangle;
     int pairsBefore = std::numeric_limits<int>::max();
     for (int refinement = 0;; ++refinement) {
         untangle = smoothSelfIntersections(mesh, surface, minAngle, edgeLength, kMaxIntersectionRounds);
+        budget.check("the separation of intersecting triangles");
         if (untangle.rounds > 0)
             logf(LogLevel::Info, source, ": ", untangle.moves, " vertex moves and ", untangle.edits,
                  " flips or collapses in ", untangle.rounds,
@@ -277,14 +336,71 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
              " intersecting triangles");
         for (int iteration = 0; iteration < kRefinementIterations; ++iteration) {
             remeshIteration(mesh, surface, field, options.smoothingStep);
-            if (iteration + 2 < kRefinementIterations) steerCount(mesh, field, targetTriangles);
+            if (iteration + 2 < kRefinementIterations) steerCount(mesh, field, targetTriangles, uniformBase, capped);
+            budget.check("local refinement");
         }
         edgeLength = field.base();
         const QualityRepairResult more =
             repairSmallAngles(mesh, surface, minAngle, edgeLength, options.repairPasses);
         repair.edits += more.edits;
         repair.passes += more.passes;
+        budget.check("the angle repair");
     }
+    return pass;
+}
+
+}  // namespace
+
+TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const RemeshOptions& options) {
+    const std::string source = input.name.empty() ? std::string("<unnamed mesh>") : input.name;
+    requireValidArguments(source, targetTriangles, options);
+    const RemeshBudget budget(source, targetTriangles, options.timeBudgetSeconds);
+    HalfEdgeMesh checked(input);  // throws unless closed, manifold and oriented
+    const ClosestPointTree surface(input);
+    const double area = surfaceArea(input);
+    if (!(area > 0.0) || !std::isfinite(area))
+        throw Error(source + ": cannot remesh a surface of area " + std::to_string(area));
+
+    // Edge length of equilateral triangles that tile the area with the target count.
+    const double uniformBase = std::sqrt(4.0 * area / (std::sqrt(3.0) * targetTriangles));
+    using Mode = RemeshOptions::ThicknessSizing;
+    std::vector<SizingSite> sites;
+    const RemeshContext context{input, surface, targetTriangles, options, uniformBase, sites, source, budget};
+    std::vector<Sizing> order;
+    if (options.thicknessSizing == Mode::Never) order = {Sizing::Uniform};
+    if (options.thicknessSizing == Mode::WhenUniformFails)
+        order = {Sizing::Uniform, Sizing::WithinTarget, Sizing::ThinPartsOwn};
+    if (options.thicknessSizing == Mode::Always) order = {Sizing::WithinTarget, Sizing::Uniform, Sizing::ThinPartsOwn};
+    // The first pass without intersections is kept, else the one with fewest. A sized pass
+    // within the target takes triangles from the thick parts for the thin ones; one with the
+    // thin parts' own lengths lets the count grow beyond the target.
+    std::optional<RemeshPass> best;
+    bool sized = false;
+    for (const Sizing sizing : order) {
+        if (best && best->untangle.remainingPairs == 0) break;
+        if (sizing != Sizing::Uniform && !sized) {
+            sized = true;
+            sites = thicknessSizingSites(surface, uniformBase);
+            logf(LogLevel::Info, source, ": ", sites.size(),
+                 " places where the surface is thin and bends ask for edges shorter than ", uniformBase, " (",
+                 budget.seconds(), " s)");
+            budget.check("the thickness sizing");
+        }
+        if (sizing != Sizing::Uniform && sites.empty()) continue;
+        if (best)
+            logf(LogLevel::Info, source, ": ", best->untangle.remainingPairs, " pairs of intersecting triangles; ",
+                 sizing == Sizing::Uniform        ? "remeshing with a uniform edge length"
+                 : sizing == Sizing::WithinTarget ? "remeshing with shorter edges at thin parts"
+                                                  : "remeshing with the thin parts' own edge lengths beyond the target");
+        RemeshPass pass = remeshPass(context, sizing);
+        if (!best || pass.untangle.remainingPairs < best->untangle.remainingPairs) best = std::move(pass);
+    }
+    RemeshPass& pass = *best;
+    HalfEdgeMesh& mesh = pass.mesh;
+    const IntersectionSmoothingResult& untangle = pass.untangle;
+    const QualityRepairResult& repair = pass.repair;
+    const double edgeLength = pass.edgeLength;
+    const double minAngle = options.minAngleDegrees * M_PI / 180.0;
     if (untangle.remainingPairs > 0)
         logf(LogLevel::Warning, source, ": BEM remesh at ", targetTriangles, " triangles still has ",
              untangle.remainingPairs,
@@ -308,7 +424,7 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
     logf(LogLevel::Info, source, ": remeshed ", input.triangles.size(), " -> ", output.triangles.size(),
          " triangles (target ", targetTriangles, ", edge length ", edgeLength, "), min angle ",
          quality.minAngleDegrees, " deg, mean min angle ", quality.meanMinAngleDegrees, " deg, ",
-         repair.edits, " repair edits in ", repair.passes, " passes, ", timer.seconds(), " s");
+         repair.edits, " repair edits in ", repair.passes, " passes, ", budget.seconds(), " s");
     if (quality.trianglesBelowAngle > 0) {
         std::ostringstream where;
         int listed = 0;
