@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Cost of a crack propagation step per method (paper §4.4): FULL (Eq. 4 every step), EST (local
 // stress + §4.3 update), HYBRID at two thresholds, on a penny crack growing in a cube of about
 // 2,000 surface triangles. Prints per step: crack triangles, active front nodes, step time and

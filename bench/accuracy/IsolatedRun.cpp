@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include "IsolatedRun.h"
 
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Runs one study run in a forked child process, so that each run's peak resident memory can be
 // measured on its own (getrusage of the child: ru_maxrss) and a crash loses only that run.

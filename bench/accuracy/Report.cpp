@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include "Report.h"
 
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The study's outputs from the collected runs: runs.csv (one row per run), steps.csv (one row per
 // propagation step of the solver-level runs), table.md (the README table) and the PNG charts:

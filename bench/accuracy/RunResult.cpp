@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include "RunResult.h"
 
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // One run of the accuracy study (one case, one method): what it cost and what it produced. Runs
 // happen in a child process (IsolatedRun.h), so the result travels as text.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include "SceneCases.h"
 
 #include <btFracture/core/Timer.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The study's rigid-body cases: the bunny of demos/scenes/bunny_smash.json hit by the steel ball
 // (paper Fig. 7) at several BEM resolutions, and the same scene with a weaker bunny for many

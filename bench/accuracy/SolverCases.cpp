@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include "SolverCases.h"
 
 #include <btFracture/bem/ElasticSolver.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The study's cases that run the fracture solver directly on one body (no rigid-body world):
 // penny and inclined penny crack (analytic reference, validation.md (a)), the paper's mode-I and

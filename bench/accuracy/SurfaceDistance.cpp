@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include "SurfaceDistance.h"
 
 #include <btFracture/geometry/ClosestPointTree.h>

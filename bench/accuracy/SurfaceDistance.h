@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Distance between two fracture surfaces (triangle meshes, e.g. a method's crack sheets and the
 // reference run's): the symmetric Hausdorff distance (geometry/SurfaceDistance.h) and the mean

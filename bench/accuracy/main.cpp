@@ -1,4 +1,5 @@
-// Accuracy against time (issue 8): every case runs with FULL, EST and - where cracks grow -
+// SPDX-License-Identifier: Zlib
+// Accuracy against time: every case runs with FULL, EST and - where cracks grow -
 // HYBRID at three thresholds (the surface plus 25 / 50 / 75 % of the crack triangles FULL
 // ended with, §4.4). Each run is a child process (peak memory per run). Writes runs.csv,
 // steps.csv, table.md and the charts into --out, and prints METRIC lines.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/bem/CrackMesh.h>
 
 #include <btFracture/core/Error.h>

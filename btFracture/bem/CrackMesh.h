@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // All crack sheets of one body (paper §3): single sheets of flat triangles inside the body,
 // oriented so that each triangle's normal is the crack normal n_c. The unknown on a node is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/bem/CrackSystem.h>
 
 #include <btFracture/bem/BoundaryOperators.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // A body's elastostatic system with cracks (paper Eq. 4): surface displacements u and crack
 // opening displacements (COD), solved by the Schur complement on the prefactored K_R, which is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/FractureEnergy.h>
 
 #include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Mechanical energy of rigid bodies and the energy audit of a fracture event: where the breaking
 // body's kinetic energy goes through the swap, the separation push, the replayed step and the

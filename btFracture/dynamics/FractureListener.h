@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Lets an application hear about fracture events (register with
 // btFractureDynamicsWorld::addFractureListener).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // A btDiscreteDynamicsWorld in which btFractureRigidBody bodies break (paper §5).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/fracture/CrackFront.h>
 
 #include <btFracture/core/ClosestPoint.h>
@@ -18,7 +19,7 @@ namespace {
 // Slab half-thickness of a crack in the level set (LevelSetBody.h: 0.85 voxel): a marker that
 // comes this close to another sheet's swept surface has entered that crack.
 constexpr double kSlabHalfWidth = 0.85;
-// Spacing limits (issue 5: [0.5, 2] voxels): shorter edges collapse, longer than kSplit split.
+// Spacing limits ([0.5, 2] voxels): shorter edges collapse, longer than kSplit split.
 constexpr double kCollapse = 0.5, kSplit = 1.5;
 // A sub-step moves a marker at most this many spacings (< kSlabHalfWidth: no marker can jump
 // over a slab it approaches).

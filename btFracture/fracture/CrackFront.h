@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The high-resolution crack front (paper §3: "we propagate the crack-front at high resolution";
 // Hahn & Wojtan 2015 §5): per crack sheet, ordered marker polylines about one voxel apart that
@@ -14,7 +15,7 @@
 // (CrackGrowth.h: only a coarse node crossing a coarse triangle stops): their markers stop at
 // another sheet's swept surface only when extend() carries a stopped coarse front on to its
 // obstacle. Stopping them at every close pass turned the coarse sheets' crossings into
-// T-junctions that leave the glass slab of tests/coupling in one piece (README, issue 5). The
+// T-junctions that leave the glass slab of tests/coupling in one piece. The
 // swept surface between successive polylines is kept as triangles for the caller to cut into
 // the level set (LevelSetBody::cutAlongSurface).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/fracture/CrackGrowth.h>
 
 #include <btFracture/core/Intersection.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Advancing crack fronts on the BEM crack mesh itself (the coarse sheet; with voxel-resolution
 // markers, FractureSolver first shortens the step of a node whose markers all stopped to end

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/fracture/CrackSeed.h>
 
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Planar disc-shaped crack sheets: the initiation seed (a hexagon, one ring) and, with more
 // rings, penny-shaped test cracks.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/fracture/FractureSolver.h>
 
 #include <btFracture/bem/InteriorStress.h>

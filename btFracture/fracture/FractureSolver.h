@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // One body's fracture simulation (paper §3-4): per event, seed cracks where the surface stress
 // exceeds the strength, then step the fronts - SIFs (FULL: Eq. 4 and displacement correlation;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/fracture/Initiation.h>
 
 #include <btFracture/core/Log.h>

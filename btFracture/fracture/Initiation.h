@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Crack initiation (paper §3, Hahn & Wojtan 2015): where the largest principal surface stress
 // exceeds the local tensile strength, or the most negative exceeds compressive factor x

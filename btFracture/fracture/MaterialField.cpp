@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/fracture/MaterialField.h>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Strength and toughness as functions of position: the material's constants, optionally
 // varied by seeded smooth noise (paper §3, "high-frequency spatial variations"; default off).

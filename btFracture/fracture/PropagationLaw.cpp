@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/fracture/PropagationLaw.h>
 
 #include <btFracture/core/PortableMath.h>

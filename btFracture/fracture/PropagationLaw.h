@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // How far and in which direction a crack front point moves in one step (paper §4.2 and the
 // propagation of Hahn & Wojtan 2015): maximum hoop stress direction (Patricio & Mattheij 2007),

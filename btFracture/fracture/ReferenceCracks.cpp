@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/core/PortableMath.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/fracture/CrackSeed.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Reference crack problems shared by the tests (tests/crack) and the accuracy study
 // (bench/accuracy): the penny and inclined penny crack with their closed forms (Kassir & Sih,

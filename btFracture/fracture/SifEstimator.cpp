@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/fracture/SifEstimator.h>
 
 #include <btFracture/core/PortableMath.h>

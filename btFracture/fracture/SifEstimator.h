@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // EST: stress intensity factors estimated from the local, non-singular stress at a front point
 // (paper §4.2), so that no crack unknowns are solved for. K_I : K_II is chosen so that the

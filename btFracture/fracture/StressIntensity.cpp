@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/fracture/StressIntensity.h>
 
 #include <Eigen/Geometry>

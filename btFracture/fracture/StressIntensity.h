@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Stress intensity factors along crack fronts. FULL method (paper §3): displacement
 // correlation (Ingraffea & Wawrzynek 2003) of the BEM crack opening at the node behind each

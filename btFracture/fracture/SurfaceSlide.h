@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Where a crack front meets the body's surface it slides along it (CrackGrowth for the coarse
 // BEM front, CrackFront for the voxel-resolution markers): the front stops just inside and moves

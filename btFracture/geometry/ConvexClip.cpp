@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/geometry/ConvexClip.h>
 
 #include <btFracture/core/Error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // A convex polytope (geometry/ConvexPenetration.h: the hull of its points inflated by its margin)
 // cut by a plane: the part on the side n.x <= offset.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/geometry/EdgeLengthField.h>
 
 #include <Eigen/Geometry>

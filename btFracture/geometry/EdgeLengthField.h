@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Target edge length over space for remeshing: a base length everywhere, shortened near sizing
 // sites (thin, curved parts of the surface that need smaller elements than the base length to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/geometry/Remesh.h>
 
 #include <btFracture/core/Error.h>

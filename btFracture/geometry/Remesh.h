@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The BEM mesh: a closed surface mesh with a chosen number of well-shaped triangles that
 // approximates a (usually much finer) input surface. The boundary element solver works on it

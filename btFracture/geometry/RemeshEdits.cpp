@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/geometry/RemeshEdits.h>
 
 #include <btFracture/core/ClosestPoint.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Local edits of a HalfEdgeMesh whose vertices live on a reference surface (a ClosestPointTree):
 // projection, the best place for an edge collapse, and moving one vertex to where its triangles

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // What a run records about fracture: the fragments' names and volumes (a ledger of every body
 // that came from breaking an original scene body), the statistics CSV, and at the end the

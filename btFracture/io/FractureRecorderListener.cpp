@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/io/FractureRecorderListener.h>
 
 #include <btFracture/core/Error.h>

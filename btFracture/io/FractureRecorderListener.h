@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Connects a btFractureDynamicsWorld to a FractureRecorder: every fracture event the world
 // reports becomes a statistics row, and its fragments get the recorder's stable names

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #include <btFracture/io/StatisticsCsv.h>
 
 #include <btFracture/core/Error.h>

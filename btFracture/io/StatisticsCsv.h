@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The statistics CSV: one row per fracture event. The fracture world's listener
 // (io/FractureRecorderListener.h) fills a FractureEventRecord per event and hands it to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Cracks in the BEM: Schur complement against the monolithic system, incremental against
 // from-scratch assembly, and FULL stress intensity factors of penny-shaped cracks against the
 // closed-form solutions (validation.md (a)).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Fracture driver: propagation law, estimator (§4.2) against FULL on growing mode-I and mode-II
 // cracks with and without the right-hand-side update (§4.3) and its gain limit, the inverse
 // correlation of §4.3, the hybrid switch (§4.4) and FULL against HYBRID after it,

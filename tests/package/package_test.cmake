@@ -1,9 +1,10 @@
+# SPDX-License-Identifier: Zlib
 # Installs btFracture into a fresh prefix and builds and runs tests/package/consumer against it.
 #   MODE=installed : install the current build tree (BUILD_DIR)
 #   MODE=rebuild   : configure, build and install a second tree of the whole project (SOURCE_DIR)
 #                    in the other Bullet precision (library only: benchmarks and demos off,
 #                    tests configured but not built)
-#   MODE=stability : in that second tree, build and run the stability suite (issue 9: hard cases
+#   MODE=stability : in that second tree, build and run the stability suite (hard cases
 #                    in both Bullet precisions)
 # Other inputs: SOURCE_DIR, BUILD_DIR, WORK_DIR, GENERATOR, BUILD_TYPE, DOUBLE (ON/OFF: the
 # precision to install and expect), NATIVE, SANITIZE, JOBS.

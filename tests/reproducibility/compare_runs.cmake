@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Zlib
 # Runs btfracture-run twice on one scene and requires byte-identical results: statistics.csv
 # without its wall-clock columns, fragments.csv and every OBJ frame. The first run must break
 # something, so that the comparison covers fracture and not just rigid-body motion.

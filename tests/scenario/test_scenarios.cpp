@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // CTest collision scenarios: each paper scene of demos/scenes, at reduced BEM and collision
 // resolution, runs headless in the runner's world (SceneWorld built by FractureSceneWorldFactory,
 // SceneFractureListener keeping names) and is checked:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 // Hard cases stay numerically stable: small scenes in a btFractureDynamicsWorld with the
 // physical BemFractureEngine at test resolution (BEM 1,000 triangles, default voxels), each
 // asserting at every step: no NaN or Inf in any body, nothing tunnelling through the ground (and at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // Bookkeeping of fracture events for the scenario and stability suites: a FractureListener that,
 // at every event (parent still in its pre-step state, fragments just swapped in), records

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Zlib
 #pragma once
 // The end-of-run tunnelling check of the scenario and stability suites (ground plane y = 0):
 // during a run a body may dip into the ground - discrete collision, fragments spawned at their
