@@ -73,7 +73,8 @@ const char* kHelp =
     "  fragments.csv, fragment_volumes.csv   piece volumes (when the target broke)\n"
     "  statistics.csv   one row per fracture event (wall-time columns empty)\n"
     "  contacts.csv     impactor-target contacts per step: rest-frame point, normal, impulse\n"
-    "  timing.json      host, start and end, wall time per phase, peak memory (differs per run)\n"
+    "  timing.json      host, start and end, wall time per phase, CPU time, peak memory (the\n"
+    "                   one file that differs between two runs of the same sweep)\n"
     "  attempts         how often the run was started\n"
     "\n"
     "  --shard k/K      runs [k N / K, (k + 1) N / K) of the N runs (0 <= k < K)\n"
@@ -223,9 +224,12 @@ void writeRunJson(const fs::path& dir, const SweepSpec& spec, const SweepRunPara
     writeFileAtomically((dir / "run.json").string(), j.dump(2) + "\n");
 }
 
-double peakMemoryMegabytes(const rusage& usage) {
-    return usage.ru_maxrss / 1024.0;
-}  // Linux: kB
+double peakMemoryMegabytes(const rusage& usage) { return usage.ru_maxrss / 1024.0; }  // Linux: kB
+
+double cpuSeconds(const rusage& usage) {
+    return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+           1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
 
 std::string hostName() {
     char name[256] = {};
@@ -368,6 +372,7 @@ int runOne(const Options& options, const SweepSpec& spec, int index) {
                            {"fracture", fractureSeconds},
                            {"output", outputSeconds},
                            {"total", total.seconds()}}},
+                         {"cpu_seconds", cpuSeconds(usage)},
                          {"threads", options.threads},
                          {"peak_memory_mb", peakMemoryMegabytes(usage)}};
     writeFileAtomically((dir / "timing.json").string(), timing.dump(2) + "\n");
@@ -522,7 +527,7 @@ int collect(const std::string& directory) {
         "z,"
         "impactor_scale,impactor_mass_kg,orient_w,orient_x,orient_y,orient_z,seed,method,steps,fracture_"
         "events,"
-        "fragments,first_contact_s,total_impulse_Ns,wall_s,fracture_s,peak_memory_mb,host,error\n";
+        "fragments,first_contact_s,total_impulse_Ns,wall_s,fracture_s,cpu_s,peak_memory_mb,host,error\n";
     int rows = 0, unfinished = 0;
     for (const fs::path& dir : folders) {
         std::ifstream in(dir / "run.json");
@@ -551,6 +556,7 @@ int collect(const std::string& directory) {
         const Json seconds = timing.value("seconds", Json::object());
         f.push_back(csvNumber(seconds.value("total", Json())));
         f.push_back(csvNumber(seconds.value("fracture", Json())));
+        f.push_back(csvNumber(timing.value("cpu_seconds", Json())));
         f.push_back(csvNumber(timing.value("peak_memory_mb", Json())));
         f.push_back(csvNumber(timing.value("host", Json(""))));
         f.push_back(csvNumber(run["error"]));
