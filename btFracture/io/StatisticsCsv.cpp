@@ -51,8 +51,10 @@ void StatisticsCsv::add(const FractureEventRecord& r) {
          << ',' << number(r.impulse) << ',' << number(r.contactDuration) << ',' << toString(r.method) << ','
          << r.bemTriangles << ',' << r.crackTriangles << ',' << r.fragments.size() << ',' << csvField(names)
          << ',';
-    if (wallTimes_) out_ << number(r.fractureSeconds) << ',' << number(r.swapSeconds);
-    else out_ << ',';
+    if (wallTimes_)
+        out_ << number(r.fractureSeconds) << ',' << number(r.swapSeconds);
+    else
+        out_ << ',';
     if (r.hasEnergy) {
         const FractureEnergyAudit& e = r.energy;
         out_ << ',' << number(e.bodyKinetic) << ',' << number(e.partnersKinetic) << ',' << number(e.swapKinetic)

@@ -224,7 +224,10 @@ void writeRunJson(const fs::path& dir, const SweepSpec& spec, const SweepRunPara
     writeFileAtomically((dir / "run.json").string(), j.dump(2) + "\n");
 }
 
-double peakMemoryMegabytes(const rusage& usage) { return usage.ru_maxrss / 1024.0; }  // Linux: kB
+// Linux reports kilobytes.
+double peakMemoryMegabytes(const rusage& usage) {
+    return usage.ru_maxrss / 1024.0;
+}
 
 double cpuSeconds(const rusage& usage) {
     return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
