@@ -11,6 +11,7 @@ packages=(
   libbullet-dev libbullet-extras-dev libeigen3-dev libccd-dev
   libopenvdb-dev libtbb-dev libboost-dev libboost-iostreams-dev
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libpng-dev
+  parallel shellcheck
 )
 if [ "${1:-}" = fuzz ]; then
   packages+=(clang libclang-rt-14-dev libomp-dev)

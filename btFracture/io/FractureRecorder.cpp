@@ -12,8 +12,8 @@
 
 namespace btfracture {
 
-FractureRecorder::FractureRecorder(const std::string& statisticsCsv) {
-    if (!statisticsCsv.empty()) csv_ = std::make_unique<StatisticsCsv>(statisticsCsv);
+FractureRecorder::FractureRecorder(const std::string& statisticsCsv, bool wallTimes) {
+    if (!statisticsCsv.empty()) csv_ = std::make_unique<StatisticsCsv>(statisticsCsv, wallTimes);
 }
 
 void FractureRecorder::addOriginal(const std::string& name, double volume) {

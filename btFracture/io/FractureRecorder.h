@@ -19,8 +19,9 @@ namespace btfracture {
 
 class FractureRecorder {
 public:
-    // `statisticsCsv`: path of the statistics CSV, or empty for none.
-    explicit FractureRecorder(const std::string& statisticsCsv = "");
+    // `statisticsCsv`: path of the statistics CSV, or empty for none; `wallTimes` false leaves its
+    // wall-time columns empty (StatisticsCsv).
+    explicit FractureRecorder(const std::string& statisticsCsv = "", bool wallTimes = true);
 
     // A scene body that may break, with its volume [m^3].
     void addOriginal(const std::string& name, double volume);

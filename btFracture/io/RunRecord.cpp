@@ -1,15 +1,11 @@
 // SPDX-License-Identifier: Zlib
 #include <btFracture/io/RunRecord.h>
 
-#include <btFracture/core/Error.h>
+#include <btFracture/io/AtomicFile.h>
 
 #include <nlohmann/json.hpp>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <ctime>
-#include <fstream>
 
 namespace btfracture {
 
@@ -60,18 +56,7 @@ void writeRunRecord(const std::string& path, const RunRecord& r) {
     j["peak_memory_mb"] = r.peakMemoryMegabytes;
     j["outputs"] = r.outputs;
 
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << j.dump(2) << '\n';
-        out.close();
-        if (!out) throw Error("cannot write '" + temporary + "': " + std::strerror(errno));
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        const std::string reason = std::strerror(errno);
-        std::remove(temporary.c_str());
-        throw Error("cannot rename '" + temporary + "' to '" + path + "': " + reason);
-    }
+    writeFileAtomically(path, j.dump(2) + "\n");
 }
 
 }  // namespace btfracture

@@ -24,8 +24,8 @@ std::string csvField(const std::string& text) {
     return quoted + "\"";
 }
 
-StatisticsCsv::StatisticsCsv(std::string path)
-    : path_(std::move(path)), out_(path_, std::ios::binary | std::ios::trunc) {
+StatisticsCsv::StatisticsCsv(std::string path, bool wallTimes)
+    : path_(std::move(path)), out_(path_, std::ios::binary | std::ios::trunc), wallTimes_(wallTimes) {
     if (!out_) throw Error("cannot create statistics file '" + path_ + "'");
     out_ << "event,step,time_s,body,contacts,impulse_Ns,contact_duration_s,method,bem_triangles,crack_"
             "triangles,"
@@ -50,7 +50,11 @@ void StatisticsCsv::add(const FractureEventRecord& r) {
     out_ << ++rows_ << ',' << r.step << ',' << number(r.time) << ',' << csvField(r.body) << ',' << r.contacts
          << ',' << number(r.impulse) << ',' << number(r.contactDuration) << ',' << toString(r.method) << ','
          << r.bemTriangles << ',' << r.crackTriangles << ',' << r.fragments.size() << ',' << csvField(names)
-         << ',' << number(r.fractureSeconds) << ',' << number(r.swapSeconds);
+         << ',';
+    if (wallTimes_)
+        out_ << number(r.fractureSeconds) << ',' << number(r.swapSeconds);
+    else
+        out_ << ',';
     if (r.hasEnergy) {
         const FractureEnergyAudit& e = r.energy;
         out_ << ',' << number(e.bodyKinetic) << ',' << number(e.partnersKinetic) << ',' << number(e.swapKinetic)

@@ -49,9 +49,9 @@ public:
     // ke_body_J + ke_partners_J).
     // fragment_names is space-separated. Fields with a comma, quote or line break are quoted
     // (RFC 4180). Numbers use 9 significant digits; every column except the two *_wall_s ones is
-    // the same in every run of the same scene. Throws btfracture::Error naming the path when the
-    // file cannot be created.
-    explicit StatisticsCsv(std::string path);
+    // the same in every run of the same scene; `wallTimes` false leaves those two empty, so that
+    // the whole file is. Throws btfracture::Error naming the path when the file cannot be created.
+    explicit StatisticsCsv(std::string path, bool wallTimes = true);
     StatisticsCsv(const StatisticsCsv&) = delete;
     StatisticsCsv& operator=(const StatisticsCsv&) = delete;
     ~StatisticsCsv();
@@ -67,6 +67,7 @@ private:
     std::string path_;
     std::ofstream out_;
     int rows_ = 0;
+    bool wallTimes_ = true;
     bool closed_ = false;
 };
 
