@@ -590,3 +590,29 @@ TEST(FractureWorld, RemovingAFragmentHandsItToTheCaller) {
     EXPECT_EQ(scene.fragments().size(), fragments.size() - 1);
     scene.step(10);
 }
+
+// Fragments that settle fall asleep (thresholds scaled to their size, 0.1 s window,
+// FragmentSleeping.h) long before Bullet's 2 s rule, and rest where they would have rested awake:
+// none was frozen while it still moved (a frozen piece would stop short, by more than the 0.1 of
+// its size it may travel within one window).
+TEST(FractureWorld, SettledFragmentsSleepWhereTheyWouldRest) {
+    Scene sleeping, awake;
+    awake.world->setFragmentSleeping(false);
+    sleeping.step(360);  // 1.5 s
+    awake.step(360);
+    const auto a = sleeping.fragments(), b = awake.fragments();
+    ASSERT_GE(a.size(), 2u);
+    ASSERT_EQ(a.size(), b.size());
+    std::size_t asleep = 0, asleepWithoutFragmentSleeping = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        asleep += a[k]->getActivationState() == ISLAND_SLEEPING;
+        asleepWithoutFragmentSleeping += b[k]->getActivationState() == ISLAND_SLEEPING;
+        const double apart = double((a[k]->getCenterOfMassPosition() - b[k]->getCenterOfMassPosition()).length());
+        EXPECT_LT(apart, 0.1 * a[k]->characteristicLength()) << a[k]->name();
+    }
+    std::printf("settled fragments: %zu of %zu asleep after 1.5 s (%zu with Bullet's rule)\n", asleep, a.size(),
+                asleepWithoutFragmentSleeping);
+    EXPECT_GE(2 * asleep, a.size());
+    EXPECT_EQ(asleepWithoutFragmentSleeping, 0u);
+    EXPECT_THROW(sleeping.world->setFragmentSleeping(true, FragmentSleeping{0.0, 0.1, 0.05, 0.02}), Error);
+}
