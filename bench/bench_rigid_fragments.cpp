@@ -32,6 +32,7 @@
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 #include <LinearMath/btQuickprof.h>
 
@@ -138,6 +139,8 @@ int main(int argc, char** argv) {
     SceneFractureListener sceneListener(names, world);
     fractureWorld->addFractureListener(&sceneListener);
     dispatcher->setNearCallback(timedNearCallback);
+    btEnterProfileZoneFunc* const previousEnter = btGetCurrentEnterProfileZoneFunc();
+    btLeaveProfileZoneFunc* const previousLeave = btGetCurrentLeaveProfileZoneFunc();
     btSetCustomEnterProfileZoneFunc(enterZone);
     btSetCustomLeaveProfileZoneFunc(leaveZone);
 
@@ -147,8 +150,8 @@ int main(int argc, char** argv) {
         world.stepFrame();
         stepSeconds += timer.seconds();
     }
-    btSetCustomEnterProfileZoneFunc(btEnterProfileZoneDefault);
-    btSetCustomLeaveProfileZoneFunc(btLeaveProfileZoneDefault);
+    btSetCustomEnterProfileZoneFunc(previousEnter);
+    btSetCustomLeaveProfileZoneFunc(previousLeave);
     const double fracture = recorder.fractureSeconds() + recorder.swapSeconds();
     const double rigid = stepSeconds - fracture;
     const double perStep = 1e3 / scene.world.steps;

@@ -594,12 +594,15 @@ TEST(FractureWorld, RemovingAFragmentHandsItToTheCaller) {
 // Fragments that settle fall asleep (thresholds scaled to their size, 0.1 s window,
 // FragmentSleeping.h) long before Bullet's 2 s rule, and rest where they would have rested awake:
 // none was frozen while it still moved (a frozen piece would stop short, by more than the 0.1 of
-// its size it may travel within one window).
+// its size it may travel within one window). While the ball still rolls on them they stay awake:
+// an island sleeps only when all of it is still.
 TEST(FractureWorld, SettledFragmentsSleepWhereTheyWouldRest) {
-    Scene sleeping, awake;
+    Scene rolling, sleeping, awake;
     awake.world->setFragmentSleeping(false);
-    sleeping.step(360);  // 1.5 s
-    awake.step(360);
+    for (Scene* scene : {&rolling, &sleeping, &awake}) scene->step(10);
+    ASSERT_EQ(sleeping.world->fractureStatistics().fractureEvents, 1u);
+    for (Scene* scene : {&sleeping, &awake}) scene->world->removeRigidBody(scene->ball.get());  // taken away
+    for (Scene* scene : {&rolling, &sleeping, &awake}) scene->step(350);  // to 1.5 s
     const auto a = sleeping.fragments(), b = awake.fragments();
     ASSERT_GE(a.size(), 2u);
     ASSERT_EQ(a.size(), b.size());
@@ -612,7 +615,19 @@ TEST(FractureWorld, SettledFragmentsSleepWhereTheyWouldRest) {
     }
     std::printf("settled fragments: %zu of %zu asleep after 1.5 s (%zu with Bullet's rule)\n", asleep, a.size(),
                 asleepWithoutFragmentSleeping);
-    EXPECT_GE(2 * asleep, a.size());
+    EXPECT_EQ(asleep, a.size());
     EXPECT_EQ(asleepWithoutFragmentSleeping, 0u);
+    // The ball rolls on: whatever it touches stays awake with it.
+    ASSERT_GT(double(rolling.ball->getLinearVelocity().length()), 0.05);
+    for (int m = 0; m < rolling.dispatcher.getNumManifolds(); ++m) {
+        const btPersistentManifold* manifold = rolling.dispatcher.getManifoldByIndexInternal(m);
+        if (manifold->getNumContacts() == 0) continue;
+        const btCollisionObject* other = manifold->getBody0() == rolling.ball.get() ? manifold->getBody1()
+                                         : manifold->getBody1() == rolling.ball.get() ? manifold->getBody0()
+                                                                                       : nullptr;
+        if (other && rolling.world->ownsBody(other)) {
+            EXPECT_TRUE(other->isActive());
+        }
+    }
     EXPECT_THROW(sleeping.world->setFragmentSleeping(true, FragmentSleeping{0.0, 0.1, 0.05, 0.02}), Error);
 }

@@ -131,9 +131,11 @@ TEST(HullBudget, BoxKeepsItsCorners) {
 }
 
 // A round chip (642 sphere vertices) kept to 48 corners: at most 48, all of them input points,
-// inside the full hull by construction, and no input point farther than 6 % of the radius
-// outside the kept hull (a collision margin is 2 % of the size; Fibonacci directions 0.36 rad
-// apart leave caps of height R (1 - cos 0.36) = 0.064 R at worst, less with corners in between).
+// inside the full hull by construction, and no input point farther than 10 % of the radius
+// outside the kept hull. A sphere is the worst case for an inscribed polytope: 48 ideally spread
+// corners (a cell of 4 pi / 48 sr each, covering radius ~0.32 rad) leave caps of
+// R (1 - cos 0.32) = 5 % R; the Fibonacci lattice's cells are up to ~1.4 times wider, hence
+// 10 %. Fragments are mostly flat cut faces, which keep their corners (test above).
 TEST(HullBudget, RoundChipStaysFaithful) {
     const double radius = 0.05;
     const TriangleMesh sphere = test::sphere(radius, 3);
@@ -144,7 +146,7 @@ TEST(HullBudget, RoundChipStaysFaithful) {
     for (const auto& p : kept)
         EXPECT_NE(std::find(sphere.vertices.begin(), sphere.vertices.end(), p), sphere.vertices.end());
     const TriangleMesh hull = convexHullMesh(kept, "kept");
-    EXPECT_LT(largestDistanceOutside(hull, sphere.vertices), 0.06 * radius);
+    EXPECT_LT(largestDistanceOutside(hull, sphere.vertices), 0.10 * radius);
     EXPECT_EQ(budgetHullPoints(sphere.vertices, 48), kept);  // deterministic
 }
 
