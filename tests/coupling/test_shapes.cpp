@@ -34,11 +34,12 @@ TEST(CollisionShapes, ConvexHullIsShrunkByItsMargin) {
 }
 
 // A round chip's hull keeps options.hullMaxVertices corners (Bullet scans every corner per
-// support query); 0 keeps them all; a budget below a tetrahedron is refused.
+// support query); 0 (the default) keeps them all; a budget below a tetrahedron is refused.
 TEST(CollisionShapes, ConvexHullKeepsItsCornerBudget) {
     const TriangleMesh ball = makeGeodesicSphere(0.05, 8);
     ASSERT_GT(ball.vertices.size(), 200u);
     CollisionShapeOptions options;
+    options.hullMaxVertices = 48;
     const auto budgeted = buildCollisionShape(ball, CollisionShapeKind::ConvexHull, options);
     EXPECT_LE(budgeted->convexPieces().front().points.size(), std::size_t(options.hullMaxVertices));
     EXPECT_EQ(static_cast<const btConvexHullShape*>(budgeted->shape())->getNumPoints(),
