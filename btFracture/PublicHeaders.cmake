@@ -20,6 +20,7 @@ set(BTFRACTURE_PUBLIC_HEADERS
   dynamics/FractureEngine.h
   dynamics/FractureListener.h
   dynamics/FractureState.h
+  dynamics/FragmentSleeping.h
   dynamics/RigidBodySnapshot.h
   dynamics/btFractureDynamicsWorld.h
   dynamics/btFractureRigidBody.h

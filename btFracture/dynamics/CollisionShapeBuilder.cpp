@@ -5,6 +5,7 @@
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/dynamics/BulletEigen.h>
+#include <btFracture/geometry/HullSimplification.h>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
@@ -52,7 +53,7 @@ std::string meshName(const TriangleMesh& mesh) {
 // to a quarter of the inradius); returns its collision geometry (shrunk points + actual margin),
 // or nullptr when the hull is flat or degenerate (fewer than 4 vertices).
 std::unique_ptr<btConvexHullShape> shrunkHull(const std::vector<Eigen::Vector3d>& points, double margin,
-                                              const std::string& name, ConvexPolytope& piece) {
+                                              int maxVertices, const std::string& name, ConvexPolytope& piece) {
     std::vector<double> coords;
     coords.reserve(3 * points.size());
     for (const auto& p : points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
@@ -66,12 +67,12 @@ std::unique_ptr<btConvexHullShape> shrunkHull(const std::vector<Eigen::Vector3d>
     if (actualMargin < 0.5 * margin)
         logf(LogLevel::Debug, name, ": collision margin reduced from ", margin, " to ", actualMargin,
              " m for a thin convex piece");
+    std::vector<Eigen::Vector3d> corners;
+    corners.reserve(static_cast<std::size_t>(hull.vertices.size()));
+    for (int i = 0; i < hull.vertices.size(); ++i) corners.push_back(toEigen(hull.vertices[i]));
+    piece.points = budgetHullPoints(corners, maxVertices);
     auto shape = std::make_unique<btConvexHullShape>();
-    piece.points.clear();
-    for (int i = 0; i < hull.vertices.size(); ++i) {
-        shape->addPoint(hull.vertices[i], false);
-        piece.points.push_back(toEigen(hull.vertices[i]));
-    }
+    for (const auto& p : piece.points) shape->addPoint(toBullet(p), false);
     shape->setMargin(btScalar(actualMargin));
     shape->recalcLocalAabb();
     piece.margin = actualMargin;
@@ -160,6 +161,9 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
         out << name << ": collision margin " << options.margin << " m (need finite, >= 0)";
         throw Error(out.str());
     }
+    if (options.hullMaxVertices != 0 && options.hullMaxVertices < 4)
+        throw Error(name + ": hull vertex budget " + std::to_string(options.hullMaxVertices) +
+                    " (need 0 for all corners, or at least 4)");
     const double volume = computeMassProperties(mesh).volume;
     const double margin = options.margin > 0.0 ? options.margin : std::min(0.04, 0.02 * std::cbrt(volume));
 
@@ -191,7 +195,7 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
     switch (kind) {
         case CollisionShapeKind::ConvexHull: {
             ConvexPolytope piece;
-            impl.root = shrunkHull(mesh.vertices, margin, name, piece);
+            impl.root = shrunkHull(mesh.vertices, margin, options.hullMaxVertices, name, piece);
             if (!impl.root)
                 throw Error(name + ": convex hull of " + std::to_string(mesh.vertices.size()) +
                             " points is flat or degenerate");
@@ -206,7 +210,8 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
             int flat = 0;
             for (std::size_t c = 0; c < clusters.size(); ++c) {
                 ConvexPolytope piece;
-                auto hull = shrunkHull(clusters[c], margin, name + " piece " + std::to_string(c), piece);
+                auto hull = shrunkHull(clusters[c], margin, options.hullMaxVertices, name + " piece " + std::to_string(c),
+                                       piece);
                 if (!hull) {  // a flat cluster holds no volume: leaving it out loses nothing
                     ++flat;
                     continue;

@@ -416,6 +416,21 @@ void btFractureDynamicsWorld::setSplitImpulseForFragments(bool enabled, double d
     splitImpulseDepth_ = depth;
 }
 
+void btFractureDynamicsWorld::setFragmentSleeping(bool enabled, const FragmentSleeping& sleeping) {
+    if (!(sleeping.window > 0.0) || !(sleeping.travel > 0.0) || !(sleeping.turn > 0.0) ||
+        !(sleeping.minimumSpeed >= 0.0))
+        throw Error("btFractureDynamicsWorld: fragment sleeping window, travel and turn must be > 0 and the "
+                    "minimum speed >= 0");
+    fragmentSleepingEnabled_ = enabled;
+    fragmentSleeping_ = sleeping;
+}
+
+void btFractureDynamicsWorld::updateActivationState(btScalar timeStep) {
+    btDiscreteDynamicsWorld::updateActivationState(timeStep);
+    if (!fragmentSleepingEnabled_) return;
+    for (const auto& fragment : owned_) settleIfStill(*fragment, fragmentSleeping_);
+}
+
 void btFractureDynamicsWorld::setEnergyAuditSteps(int steps) {
     if (steps < 0) throw Error("btFractureDynamicsWorld: energy audit steps must be >= 0, not " + std::to_string(steps));
     energyAuditSteps_ = steps;
@@ -798,8 +813,11 @@ std::vector<btFractureRigidBody*> btFractureDynamicsWorld::spawnFragments(btFrac
         body->setSpinningFriction(parent.getSpinningFriction());
         body->setRestitution(parent.getRestitution());
         body->setDamping(parent.getLinearDamping(), parent.getAngularDamping());
-        body->setSleepingThresholds(parent.getLinearSleepingThreshold(),
-                                    parent.getAngularSleepingThreshold());
+        if (fragmentSleepingEnabled_)
+            setFragmentSleepingThresholds(*body, body->characteristicLength(), fragmentSleeping_);
+        else
+            body->setSleepingThresholds(parent.getLinearSleepingThreshold(),
+                                        parent.getAngularSleepingThreshold());
         body->setFlags(parent.getFlags());
         body->setCollisionFlags(parent.getCollisionFlags());
         body->setUserPointer(parent.getUserPointer());

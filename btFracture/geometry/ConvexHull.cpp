@@ -17,8 +17,18 @@ namespace {
 
 // ---- Exact orientation (expansion arithmetic: every value is a sum of non-overlapping doubles
 // in increasing magnitude; sums and products are exact as long as no product underflows).
+// Expansions live on the stack: the exact path runs for every (near-)coplanar point of a hull,
+// which cut faces and voxel-aligned level-set surfaces have by the thousand.
 
-using Expansion = std::vector<double>;
+// The largest expansion side() builds: differences have <= 2 components, a product of m and n
+// components <= 1 + 2 m n (so <= 9 for two differences), a cross term <= 18, a difference times a
+// cross term <= 73, the determinant <= 219.
+constexpr int kMaxComponents = 224;
+
+struct Expansion {
+    double c[kMaxComponents];
+    int n = 0;
+};
 
 void twoSum(double a, double b, double& sum, double& error) {
     sum = a + b;
@@ -26,68 +36,70 @@ void twoSum(double a, double b, double& sum, double& error) {
     error = (a - aVirtual) + (b - bVirtual);
 }
 
-Expansion difference(double a, double b) {
+void difference(double a, double b, Expansion& h) {
     const double x = a - b;
     const double bVirtual = a - x, aVirtual = x + bVirtual;
     const double y = (a - aVirtual) + (bVirtual - b);
-    if (y == 0.0) return {x};
-    return {y, x};
+    h.n = 0;
+    if (y != 0.0) h.c[h.n++] = y;
+    h.c[h.n++] = x;
 }
 
-// e + b
-Expansion grow(const Expansion& e, double b) {
-    Expansion h;
-    h.reserve(e.size() + 1);
+// e += b, in place (each component is read before its slot or a later one is written).
+void grow(Expansion& e, double b) {
     double q = b;
-    for (const double component : e) {
+    int n = 0;
+    for (int i = 0; i < e.n; ++i) {
         double sum, error;
-        twoSum(q, component, sum, error);
+        twoSum(q, e.c[i], sum, error);
         q = sum;
-        if (error != 0.0) h.push_back(error);
+        if (error != 0.0) e.c[n++] = error;
     }
-    if (q != 0.0 || h.empty()) h.push_back(q);
-    return h;
+    if (q != 0.0 || n == 0) e.c[n++] = q;
+    e.n = n;
 }
 
-Expansion sum(Expansion e, const Expansion& f) {
-    for (const double component : f) e = grow(e, component);
-    return e;
+// e += f
+void add(Expansion& e, const Expansion& f) {
+    for (int i = 0; i < f.n; ++i) grow(e, f.c[i]);
 }
 
-// e * b
-Expansion scale(const Expansion& e, double b) {
-    Expansion h;
-    h.reserve(2 * e.size());
-    double q = e[0] * b;
-    double error = std::fma(e[0], b, -q);
-    if (error != 0.0) h.push_back(error);
-    for (std::size_t i = 1; i < e.size(); ++i) {
-        const double product = e[i] * b, productError = std::fma(e[i], b, -product);
+// h = e * b
+void scale(const Expansion& e, double b, Expansion& h) {
+    h.n = 0;
+    double q = e.c[0] * b;
+    double error = std::fma(e.c[0], b, -q);
+    if (error != 0.0) h.c[h.n++] = error;
+    for (int i = 1; i < e.n; ++i) {
+        const double product = e.c[i] * b, productError = std::fma(e.c[i], b, -product);
         double s;
         twoSum(q, productError, s, error);
-        if (error != 0.0) h.push_back(error);
+        if (error != 0.0) h.c[h.n++] = error;
         q = product + s;  // |product| >= |s|: exact with the error below
         error = s - (q - product);
-        if (error != 0.0) h.push_back(error);
+        if (error != 0.0) h.c[h.n++] = error;
     }
-    if (q != 0.0 || h.empty()) h.push_back(q);
-    return h;
+    if (q != 0.0 || h.n == 0) h.c[h.n++] = q;
 }
 
-Expansion product(const Expansion& e, const Expansion& f) {
-    Expansion total{0.0};
-    for (const double component : f) total = sum(total, scale(e, component));
-    return total;
+// total = e * f
+void product(const Expansion& e, const Expansion& f, Expansion& total) {
+    total.n = 1;
+    total.c[0] = 0.0;
+    Expansion scaled;
+    for (int i = 0; i < f.n; ++i) {
+        scale(e, f.c[i], scaled);
+        add(total, scaled);
+    }
 }
 
-Expansion negated(Expansion e) {
-    for (double& component : e) component = -component;
-    return e;
+void negate(Expansion& e) {
+    for (int i = 0; i < e.n; ++i) e.c[i] = -e.c[i];
 }
 
 int sign(const Expansion& e) {
-    for (auto it = e.rbegin(); it != e.rend(); ++it)
-        if (*it != 0.0) return *it > 0.0 ? 1 : -1;
+    for (int i = e.n - 1; i >= 0; --i)
+        if (e.c[i] != 0.0) return e.c[i] > 0.0 ? 1 : -1;
     return 0;
 }
 
@@ -109,13 +121,26 @@ int side(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector
     if (det < -bound) return -1;
     std::array<Expansion, 3> U, V, W;
     for (int k = 0; k < 3; ++k) {
-        U[k] = difference(b[k], a[k]);
-        V[k] = difference(c[k], a[k]);
-        W[k] = difference(p[k], a[k]);
+        difference(b[k], a[k], U[k]);
+        difference(c[k], a[k], V[k]);
+        difference(p[k], a[k], W[k]);
     }
-    const auto cross = [&](int i, int j) { return sum(product(V[i], W[j]), negated(product(V[j], W[i]))); };
-    const Expansion exact =
-        sum(sum(product(U[0], cross(1, 2)), product(U[1], cross(2, 0))), product(U[2], cross(0, 1)));
+    Expansion exact, cross, term, negative;
+    exact.n = 0;
+    // cross(i, j) = V_i W_j - V_j W_i; exact = U_0 cross(1, 2) + U_1 cross(2, 0) + U_2 cross(0, 1)
+    const int pairs[3][2] = {{1, 2}, {2, 0}, {0, 1}};
+    for (int k = 0; k < 3; ++k) {
+        const int i = pairs[k][0], j = pairs[k][1];
+        product(V[i], W[j], cross);
+        product(V[j], W[i], negative);
+        negate(negative);
+        add(cross, negative);
+        product(U[k], cross, term);
+        if (k == 0)
+            exact = term;
+        else
+            add(exact, term);
+    }
     return sign(exact);
 }
 

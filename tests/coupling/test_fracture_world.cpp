@@ -590,3 +590,45 @@ TEST(FractureWorld, RemovingAFragmentHandsItToTheCaller) {
     EXPECT_EQ(scene.fragments().size(), fragments.size() - 1);
     scene.step(10);
 }
+
+// Fragments that settle fall asleep (thresholds scaled to their size, 0.1 s window,
+// FragmentSleeping.h) long before Bullet's 2 s rule, and rest where they would have rested awake:
+// none was frozen while it still moved (a frozen piece would stop short, by more than the 0.1 of
+// its size it may travel within one window). While the ball still rolls on them they stay awake:
+// an island sleeps only when all of it is still.
+TEST(FractureWorld, SettledFragmentsSleepWhereTheyWouldRest) {
+    Scene rolling, sleeping, awake;
+    rolling.world->setFragmentSleeping(true);
+    sleeping.world->setFragmentSleeping(true);
+    for (Scene* scene : {&rolling, &sleeping, &awake}) scene->step(10);
+    ASSERT_EQ(sleeping.world->fractureStatistics().fractureEvents, 1u);
+    for (Scene* scene : {&sleeping, &awake}) scene->world->removeRigidBody(scene->ball.get());  // taken away
+    for (Scene* scene : {&rolling, &sleeping, &awake}) scene->step(350);  // to 1.5 s
+    const auto a = sleeping.fragments(), b = awake.fragments();
+    ASSERT_GE(a.size(), 2u);
+    ASSERT_EQ(a.size(), b.size());
+    std::size_t asleep = 0, asleepWithoutFragmentSleeping = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        asleep += a[k]->getActivationState() == ISLAND_SLEEPING;
+        asleepWithoutFragmentSleeping += b[k]->getActivationState() == ISLAND_SLEEPING;
+        const double apart = double((a[k]->getCenterOfMassPosition() - b[k]->getCenterOfMassPosition()).length());
+        EXPECT_LT(apart, 0.1 * a[k]->characteristicLength()) << a[k]->name();
+    }
+    std::printf("settled fragments: %zu of %zu asleep after 1.5 s (%zu with Bullet's rule)\n", asleep, a.size(),
+                asleepWithoutFragmentSleeping);
+    EXPECT_EQ(asleep, a.size());
+    EXPECT_EQ(asleepWithoutFragmentSleeping, 0u);
+    // The ball rolls on: whatever it touches stays awake with it.
+    ASSERT_GT(double(rolling.ball->getLinearVelocity().length()), 0.05);
+    for (int m = 0; m < rolling.dispatcher.getNumManifolds(); ++m) {
+        const btPersistentManifold* manifold = rolling.dispatcher.getManifoldByIndexInternal(m);
+        if (manifold->getNumContacts() == 0) continue;
+        const btCollisionObject* other = manifold->getBody0() == rolling.ball.get() ? manifold->getBody1()
+                                         : manifold->getBody1() == rolling.ball.get() ? manifold->getBody0()
+                                                                                       : nullptr;
+        if (other && rolling.world->ownsBody(other)) {
+            EXPECT_TRUE(other->isActive());
+        }
+    }
+    EXPECT_THROW(sleeping.world->setFragmentSleeping(true, FragmentSleeping{0.0, 0.1, 0.05, 0.02}), Error);
+}

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Zlib
 #include "TestMeshes.h"
 
+#include <btFracture/core/Error.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/dynamics/CollisionShapeBuilder.h>
@@ -30,6 +31,32 @@ TEST(CollisionShapes, ConvexHullIsShrunkByItsMargin) {
     // Bullet's own support mapping (hull + margin) agrees.
     const auto* convex = static_cast<const btConvexShape*>(storage->shape());
     EXPECT_NEAR(double(convex->localGetSupportingVertex(btVector3(1, 0, 0)).x()), 0.2, 1e-4);
+}
+
+// A round chip's hull keeps options.hullMaxVertices corners (Bullet scans every corner per
+// support query); 0 (the default) keeps them all; a budget below a tetrahedron is refused.
+TEST(CollisionShapes, ConvexHullKeepsItsCornerBudget) {
+    const TriangleMesh ball = makeGeodesicSphere(0.05, 8);
+    ASSERT_GT(ball.vertices.size(), 200u);
+    CollisionShapeOptions options;
+    options.hullMaxVertices = 48;
+    const auto budgeted = buildCollisionShape(ball, CollisionShapeKind::ConvexHull, options);
+    EXPECT_LE(budgeted->convexPieces().front().points.size(), std::size_t(options.hullMaxVertices));
+    EXPECT_EQ(static_cast<const btConvexHullShape*>(budgeted->shape())->getNumPoints(),
+              int(budgeted->convexPieces().front().points.size()));
+    options.hullMaxVertices = 0;
+    const auto full = buildCollisionShape(ball, CollisionShapeKind::ConvexHull, options);
+    EXPECT_GT(full->convexPieces().front().points.size(), 200u);
+    // Along any axis the budgeted hull + margin reaches within 10 % of the radius of the full one
+    // (geometry test HullBudget.RoundChipStaysFaithful).
+    for (const btVector3 axis : {btVector3(1, 0, 0), btVector3(0, 1, 0), btVector3(0.6f, 0, 0.8f)}) {
+        const double a = double(static_cast<const btConvexShape*>(budgeted->shape())->localGetSupportingVertex(axis).dot(axis));
+        const double b = double(static_cast<const btConvexShape*>(full->shape())->localGetSupportingVertex(axis).dot(axis));
+        EXPECT_LE(a, b + 1e-6);
+        EXPECT_GT(a, b - 0.10 * 0.05);
+    }
+    options.hullMaxVertices = 3;
+    EXPECT_THROW(buildCollisionShape(ball, CollisionShapeKind::ConvexHull, options), Error);
 }
 
 TEST(CollisionShapes, DecompositionCoversANonConvexMesh) {

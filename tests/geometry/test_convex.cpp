@@ -6,9 +6,11 @@
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/geometry/ConvexPenetration.h>
+#include <btFracture/geometry/HullSimplification.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace btfracture {
@@ -97,6 +99,55 @@ TEST(ConvexHull, DegenerateInputIsRejected) {
     EXPECT_THROW(convexHullMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, NAN}}, "nan"), Error);
     EXPECT_TRUE(isConvex(convexHullMesh(test::sphere(1.0, 2).vertices, "sphere")));
     EXPECT_FALSE(isConvex(test::demoMesh("bunny.obj", 0.15)));
+}
+
+// Largest distance of `points` outside the hull mesh (0 when all are inside).
+double largestDistanceOutside(const TriangleMesh& hull, const std::vector<Eigen::Vector3d>& points) {
+    double largest = 0.0;
+    for (const auto& p : points)
+        for (const auto& t : hull.triangles) {
+            const Eigen::Vector3d a = hull.vertices[t[0]];
+            const Eigen::Vector3d n = (hull.vertices[t[1]] - a).cross(hull.vertices[t[2]] - a).normalized();
+            largest = std::max(largest, n.dot(p - a));
+        }
+    return largest;
+}
+
+// A box sampled on its faces and inside keeps exactly its eight corners under any budget >= 8.
+TEST(HullBudget, BoxKeepsItsCorners) {
+    std::vector<Eigen::Vector3d> points;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int i = 0; i < 600; ++i) {
+        Eigen::Vector3d p(u(rng), u(rng), u(rng));
+        p[i % 3] = i % 2 ? 1.0 : -1.0;  // on a face
+        points.push_back(p.cwiseProduct(Eigen::Vector3d(0.1, 0.2, 0.3)));
+    }
+    for (const auto& corner : boxCorners({0.1, 0.2, 0.3})) points.push_back(corner);
+    const std::vector<Eigen::Vector3d> kept = budgetHullPoints(points, 16);
+    EXPECT_EQ(kept.size(), 8u);
+    expectBoxHull(kept, 0.2 * 0.4 * 0.6, 1e-12);
+    EXPECT_EQ(budgetHullPoints(points, 0).size(), points.size());  // 0: no budget
+}
+
+// A round chip (642 sphere vertices) kept to 48 corners: at most 48, all of them input points,
+// inside the full hull by construction, and no input point farther than 10 % of the radius
+// outside the kept hull. A sphere is the worst case for an inscribed polytope: 48 ideally spread
+// corners (a cell of 4 pi / 48 sr each, covering radius ~0.32 rad) leave caps of
+// R (1 - cos 0.32) = 5 % R; the Fibonacci lattice's cells are up to ~1.4 times wider, hence
+// 10 %. Fragments are mostly flat cut faces, which keep their corners (test above).
+TEST(HullBudget, RoundChipStaysFaithful) {
+    const double radius = 0.05;
+    const TriangleMesh sphere = test::sphere(radius, 3);
+    ASSERT_GT(sphere.vertices.size(), 48u);
+    const std::vector<Eigen::Vector3d> kept = budgetHullPoints(sphere.vertices, 48);
+    EXPECT_LE(kept.size(), 48u);
+    EXPECT_GE(kept.size(), 40u);
+    for (const auto& p : kept)
+        EXPECT_NE(std::find(sphere.vertices.begin(), sphere.vertices.end(), p), sphere.vertices.end());
+    const TriangleMesh hull = convexHullMesh(kept, "kept");
+    EXPECT_LT(largestDistanceOutside(hull, sphere.vertices), 0.10 * radius);
+    EXPECT_EQ(budgetHullPoints(sphere.vertices, 48), kept);  // deterministic
 }
 
 // Places hull points (own frame) in the world.

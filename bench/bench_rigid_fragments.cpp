@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: Zlib
+// Where the rigid-body time of a fracture-heavy scene goes. Replays a scene (default: the demo,
+// column_bunny, which ends with about 400 bodies) exactly as btfracture-run does (SceneWorld with
+// FractureSceneWorldFactory, the scene and recorder listeners, no outputs) and splits each step:
+//  - fracture: the engine and the swap (FractureRecorder, the runner's "fracture time");
+//  - rigid: the rest of the step (the runner's "rigid-body time"), itself split by Bullet's own
+//    profile zones (btSetCustomEnterProfileZoneFunc): broadphase (calculateOverlappingPairs),
+//    narrowphase (dispatchAllCollisionPairs), islands, solver (solveConstraints), integration
+//    (integrateTransforms, CCD sweeps included), prediction (predictUnconstraintMotion,
+//    createPredictiveContacts), activation, and what is left outside Bullet's zones (fragment
+//    shapes, separation, the discarded step of a fracture event, energy audits);
+//  - narrowphase per shape pair: the dispatcher's near callback timed per pair of Bullet shape
+//    types.
+// Prints METRIC rigid_ms_per_step_400_fragments (rigid ms per step of the default scene; the
+// scene's path instead of "400_fragments" for another scene), the rigid share of the step time,
+// the bodies at the end and the per-phase times.
+//
+// Usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] [--no-sleeping]
+//   --hull-vertices N  collision hull corner budget of the scene's breakable bodies and their
+//                      fragments (0: every corner; default: CollisionShapeOptions)
+//   --no-sleeping      fragments keep their parent's sleeping thresholds (Bullet's 2 s rule)
+#include <btFracture/core/ThreadLimit.h>
+#include <btFracture/core/Timer.h>
+#include <btFracture/dynamics/btFractureDynamicsWorld.h>
+#include <btFracture/dynamics/btFractureRigidBody.h>
+#include <btFracture/io/FractureRecorder.h>
+#include <btFracture/io/FractureRecorderListener.h>
+#include <btFracture/io/FractureSceneWorldFactory.h>
+#include <btFracture/io/SceneFile.h>
+#include <btFracture/io/SceneFractureListener.h>
+#include <btFracture/io/SceneWorld.h>
+
+#include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
+#include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionShapes/btCollisionShape.h>
+#include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
+#include <LinearMath/btQuickprof.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace btfracture;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Inclusive time per Bullet profile zone name [s].
+struct ZoneTimes {
+    std::vector<std::pair<const char*, Clock::time_point>> open;
+    std::map<std::string, double> seconds;
+};
+ZoneTimes zones;
+
+void enterZone(const char* name) {
+    zones.open.emplace_back(name, Clock::now());
+}
+void leaveZone() {
+    if (zones.open.empty()) return;
+    const auto [name, start] = zones.open.back();
+    zones.open.pop_back();
+    zones.seconds[name] += std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Narrowphase time per pair of shape type names [s] and the pairs' count.
+std::map<std::string, std::pair<double, long>> pairTimes;
+
+void timedNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher, const btDispatcherInfo& info) {
+    const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+    const auto* b = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+    std::string x = a->getCollisionShape()->getName(), y = b->getCollisionShape()->getName();
+    if (y < x) std::swap(x, y);
+    const auto start = Clock::now();
+    btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
+    auto& entry = pairTimes[x + " - " + y];
+    entry.first += std::chrono::duration<double>(Clock::now() - start).count();
+    ++entry.second;
+}
+
+double zone(const char* name) {
+    const auto found = zones.seconds.find(name);
+    return found == zones.seconds.end() ? 0.0 : found->second;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string file = std::string(BTFRACTURE_MESH_DIR) + "/../scenes/column_bunny.json";
+    bool defaultScene = true, sleeping = true;
+    int steps = -1, hullVertices = -1;
+    for (int i = 1; i < argc; ++i) {
+        const bool hasValue = i + 1 < argc;
+        if (!std::strcmp(argv[i], "--steps") && hasValue) {
+            steps = std::atoi(argv[++i]);
+        } else if (!std::strcmp(argv[i], "--hull-vertices") && hasValue) {
+            hullVertices = std::atoi(argv[++i]);
+        } else if (!std::strcmp(argv[i], "--no-sleeping")) {
+            sleeping = false;
+        } else if (argv[i][0] != '-') {
+            file = argv[i];
+            defaultScene = false;
+        } else {
+            std::fprintf(stderr,
+                         "usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] "
+                         "[--no-sleeping]\n");
+            return 2;
+        }
+    }
+    Scene scene = readSceneFile(file);
+    if (steps > 0) scene.world.steps = steps;
+    const ThreadLimit threads(scene.run.threads);
+    FractureSceneWorldFactory factory(scene.effects.seed);
+    SceneWorld world(scene, factory);
+    auto* fractureWorld = dynamic_cast<btFractureDynamicsWorld*>(&world.world());
+    auto* dispatcher = dynamic_cast<btCollisionDispatcher*>(world.world().getDispatcher());
+    if (!fractureWorld || !dispatcher) {
+        std::fprintf(stderr, "bench_rigid_fragments: %s has no breakable body\n", file.c_str());
+        return 2;
+    }
+    if (!sleeping) fractureWorld->setFragmentSleeping(false);
+    FractureRecorder recorder;
+    FractureRecorderListener names(recorder, scene.world.dt / scene.world.substeps);
+    for (const auto& body : world.bodies())
+        if (btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody)) {
+            names.addOriginal(*b, body.name);
+            if (hullVertices >= 0) {  // the body's own shape keeps its budget; its fragments take this
+                FractureBodySettings settings = b->settings();
+                settings.shapeOptions.hullMaxVertices = hullVertices;
+                b->setSettings(settings);
+            }
+        }
+    SceneFractureListener sceneListener(names, world);
+    fractureWorld->addFractureListener(&sceneListener);
+    dispatcher->setNearCallback(timedNearCallback);
+    btEnterProfileZoneFunc* const previousEnter = btGetCurrentEnterProfileZoneFunc();
+    btLeaveProfileZoneFunc* const previousLeave = btGetCurrentLeaveProfileZoneFunc();
+    btSetCustomEnterProfileZoneFunc(enterZone);
+    btSetCustomLeaveProfileZoneFunc(leaveZone);
+
+    double stepSeconds = 0.0;
+    for (int s = 0; s < scene.world.steps; ++s) {
+        Timer timer;
+        world.stepFrame();
+        stepSeconds += timer.seconds();
+    }
+    btSetCustomEnterProfileZoneFunc(previousEnter);
+    btSetCustomLeaveProfileZoneFunc(previousLeave);
+    const double fracture = recorder.fractureSeconds() + recorder.swapSeconds();
+    const double rigid = stepSeconds - fracture;
+    const double perStep = 1e3 / scene.world.steps;
+    int active = 0, asleep = 0;
+    for (const auto& body : world.bodies()) {
+        if (body.rigidBody->isStaticOrKinematicObject()) continue;
+        (body.rigidBody->isActive() ? active : asleep) += 1;
+    }
+    const std::string tag = defaultScene ? std::string("400_fragments") : scene.name;
+    const FractureStatistics& stats = fractureWorld->fractureStatistics();
+    std::printf("scene %s: %d steps, %d fracture events, %zu bodies at the end (%d awake, %d asleep)\n",
+                file.c_str(), scene.world.steps, recorder.events(), world.bodies().size(), active, asleep);
+    // Engine calls that broke nothing are not in the recorder's fracture time: the runner counts
+    // them as rigid-body time.
+    std::printf("engine calls %llu (%llu without fragments), Bullet's own steps %.3f ms per step\n",
+                static_cast<unsigned long long>(stats.engineCalls),
+                static_cast<unsigned long long>(stats.engineCalls - stats.fractureEvents),
+                zone("internalSingleStepSimulation") * perStep);
+    std::printf("METRIC rigid_ms_per_step_%s %.3f ms\n", tag.c_str(), rigid * perStep);
+    std::printf("METRIC rigid_share_of_wall_%s %.3f fraction\n", tag.c_str(), rigid / stepSeconds);
+    std::printf("METRIC fracture_ms_per_step_%s %.3f ms\n", tag.c_str(), fracture * perStep);
+    std::printf("METRIC bodies_at_end_%s %zu bodies\n", tag.c_str(), world.bodies().size());
+    // Bullet's step, by zone (inclusive times; CCD sweeps run inside integrateTransforms).
+    const double broad = zone("updateAabbs") + zone("calculateOverlappingPairs");
+    const double narrow = zone("dispatchAllCollisionPairs");
+    const double islands = zone("calculateSimulationIslands"), solver = zone("solveConstraints");
+    const double integrate = zone("integrateTransforms");
+    const double predict = zone("predictUnconstraintMotion") + zone("createPredictiveContacts");
+    const double activation = zone("updateActivationState");
+    const double rest = rigid - broad - narrow - islands - solver - integrate - predict - activation;
+    const std::pair<const char*, double> phases[] = {
+        {"broadphase", broad}, {"narrowphase", narrow},         {"islands", islands},
+        {"solver", solver},    {"integrate_ccd", integrate},     {"predict", predict},
+        {"activation", activation}, {"outside_bullet", rest}};
+    for (const auto& [name, seconds] : phases)
+        std::printf("METRIC rigid_%s_ms_per_step_%s %.3f ms\n", name, tag.c_str(), seconds * perStep);
+    std::vector<std::pair<std::string, std::pair<double, long>>> pairs(pairTimes.begin(), pairTimes.end());
+    std::sort(pairs.begin(), pairs.end(),
+              [](const auto& a, const auto& b) { return a.second.first > b.second.first; });
+    for (const auto& [name, entry] : pairs)
+        std::printf("  narrowphase %-40s %8.3f ms per step, %8.1f pairs per step, %6.2f us per pair\n", name.c_str(),
+                    entry.first * perStep, double(entry.second) / scene.world.steps,
+                    entry.second > 0 ? 1e6 * entry.first / double(entry.second) : 0.0);
+    return 0;
+}
