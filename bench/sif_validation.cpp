@@ -15,8 +15,8 @@ using namespace btfracture;
 namespace {
 
 const Material kMaterial(1e9, 0.3, 1000.0, 1e7, 1e6, 2.0, "validation");
-// Elements along the crack depth (a few seconds per case).
-constexpr int kEdgeCrackElements = 4, kNotchedBeamElements = 4;
+// Elements along the crack depth, as in tests/crack (a few seconds per case).
+constexpr int kEdgeCrackElements = 4, kNotchedBeamElements = 8;
 
 // K_I at mid-thickness of a surface-breaking through crack, relative to the handbook value.
 double surfaceCrackError(const SurfaceCrackCase& c) {

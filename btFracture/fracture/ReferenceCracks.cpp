@@ -134,14 +134,14 @@ SurfaceCrackCase notchedBeamCase(int elementsPerDepth, double extension) {
     c.across = across;
     c.midFront = Eigen::Vector3d(0.0, a, 0.0);
     c.tractions = [=](const SurfaceMesh& mesh) {
-        // Top patch: the cells next to the crack plane, |x| < h (P down); bottom patches |x -+ S/2| < patch (P/2 up each).
+        // Top patch: the cells next to the crack plane, |x| < h (P down); bottom patches |x -+ S/2| < patch
+        // (P/2 up each).
         Eigen::VectorXd q = Eigen::VectorXd::Zero(3 * mesh.triangleCount());
         std::vector<int> top, left, right;
         double topArea = 0.0, leftArea = 0.0, rightArea = 0.0;
         for (int t = 0; t < mesh.triangleCount(); ++t) {
             const Eigen::Vector3d p = mesh.centroid(t) + mesh.offset();
-            if (mesh.normal(t).y() > 0.99 && std::abs(p.x()) < h)
-                top.push_back(t), topArea += mesh.area(t);
+            if (mesh.normal(t).y() > 0.99 && std::abs(p.x()) < h) top.push_back(t), topArea += mesh.area(t);
             if (mesh.normal(t).y() < -0.99 && std::abs(p.x() + 0.5 * S) < patch)
                 left.push_back(t), leftArea += mesh.area(t);
             if (mesh.normal(t).y() < -0.99 && std::abs(p.x() - 0.5 * S) < patch)

@@ -53,11 +53,11 @@ struct SurfaceCrackCase {
 // Plate of width b (x), height 4 b (y) and thickness b/2 (z) under uniform tension sigma along y,
 // straight edge crack of depth a = ratio b from the face x = 0; h = a / elementsPerDepth on the
 // crack and the surface near it. Exact: sigma sqrt(pi a) F(a/b) (Tada's fit, 0.5 % for a/b <= 0.6).
-SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension = 0.5);
+SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension = 0.0);
 // ASTM E399 single-edge-notched beam in three-point bending: depth W (y), span S = 4 W, thickness
 // B = W/2, a/W = 0.5, load P on a patch of the top face over the crack, P/2 on a patch over each
 // support; h = a / elementsPerDepth near the crack. Exact: P S / (B W^1.5) f(a/W).
-SurfaceCrackCase notchedBeamCase(int elementsPerDepth, double extension = 0.5);
+SurfaceCrackCase notchedBeamCase(int elementsPerDepth, double extension = 0.0);
 
 struct SurfaceCrackResult {
     double KI = 0.0;  // FULL, displacement correlation at the front node nearest mid-thickness

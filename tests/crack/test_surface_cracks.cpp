@@ -1,13 +1,41 @@
 // SPDX-License-Identifier: Zlib
-// The surface-breaking reference cracks of bench/sif_validation: their handbook values against
-// the published tables, and the meshes they are solved on.
+// Surface-breaking cracks in FULL (bench/sif_validation's cases): the mouth opens, and K_I at
+// mid-thickness matches the handbook values, which are checked against the published tables.
 #include <btFracture/fracture/ReferenceCracks.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace btfracture;
+
+namespace {
+
+const Material kMaterial(1e9, 0.3, 1000.0, 1e7, 1e6, 2.0, "test");
+
+double relativeError(const SurfaceCrackCase& c) {
+    const SurfaceCrackResult r = solveSurfaceCrack(c, kMaterial);
+    std::printf("%s: %d surface triangles, %d crack unknowns, K_I / exact %.4f\n", c.name.c_str(),
+                r.surfaceTriangles, r.crackUnknowns, r.KI / c.exactKI);
+    return r.KI / c.exactKI - 1.0;
+}
+
+}  // namespace
+
+// Through edge crack, 4 elements along the depth: measured +2.5 % (a/b = 0.2) and +5.1 % (0.4);
+// at 8 elements +4.2 % and +6.5 % (the mid-thickness K_I of the 3D plate sits a few per cent above
+// the plane-strain handbook value, and the displacement correlation reads high, as for the penny).
+// With the mouth held shut the same meshes gave 0.58 and 0.35 of the exact value.
+TEST(SurfaceCrack, EdgeCrackInTensionMatchesTada) {
+    EXPECT_NEAR(relativeError(edgeCrackCase(0.2, 4)), 0.0, 0.05);
+    EXPECT_NEAR(relativeError(edgeCrackCase(0.4, 4)), 0.0, 0.06);
+}
+
+// ASTM E399 notched beam, 8 elements along the depth: measured +3.4 % (+13 % at 4, +9 % at 6).
+TEST(SurfaceCrack, NotchedBeamInBendingMatchesAstm) {
+    EXPECT_NEAR(relativeError(notchedBeamCase(8)), 0.0, 0.05);
+}
 
 TEST(SurfaceCrackCases, HandbookValuesMatchThePublishedTables) {
     // Tada, Paris & Irwin, The Stress Analysis of Cracks Handbook (2000), 2.10: F(0.2) = 1.37,
