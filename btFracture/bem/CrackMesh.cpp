@@ -17,6 +17,7 @@ int CrackMesh::addNode(const Eigen::Vector3d& position) {
     nodes_.push_back(position);
     nodeTriangles_.emplace_back();
     unknown_.push_back(-1);
+    surfaceNode_.push_back(kUnclassified);
     return nodeCount() - 1;
 }
 
@@ -76,6 +77,17 @@ Eigen::Vector3d CrackMesh::operatorCurl(int t, int k) const {
     return (-n).cross(grad);
 }
 
+std::vector<int> CrackMesh::refreshUnknowns(const SurfaceMesh& body) {
+    const double tolerance = 1e-9 * body.radius();
+    for (int i = 0; i < nodeCount(); ++i) {
+        if (surfaceNode_[i] != kUnclassified) continue;
+        surfaceNode_[i] = -1;
+        for (int s = 0; s < body.nodeCount() && surfaceNode_[i] < 0; ++s)
+            if ((body.node(s) - nodes_[i]).norm() <= tolerance) surfaceNode_[i] = s;
+    }
+    return refreshUnknowns();
+}
+
 std::vector<int> CrackMesh::refreshUnknowns() {
     // Edge census: a boundary edge is used once, an interior edge twice in opposite directions.
     std::map<std::pair<int, int>, std::vector<std::pair<int, bool>>> edges;  // -> (triangle, forward)
@@ -85,7 +97,7 @@ std::vector<int> CrackMesh::refreshUnknowns() {
             edges[{std::min(a, b), std::max(a, b)}].emplace_back(t, a < b);
         }
     std::vector<char> onFront(nodes_.size(), 0);
-    frontEdges_.clear();
+    boundaryEdges_.clear();
     UnionFind sheets(static_cast<int>(triangles_.size()));
     for (const auto& [edge, uses] : edges) {
         if (uses.size() > 2 || (uses.size() == 2 && uses[0].second == uses[1].second)) {
@@ -99,7 +111,7 @@ std::vector<int> CrackMesh::refreshUnknowns() {
             onFront[edge.first] = onFront[edge.second] = 1;
             const int t = uses[0].first;
             const bool forward = uses[0].second;
-            frontEdges_.push_back(
+            boundaryEdges_.push_back(
                 {forward ? edge.first : edge.second, forward ? edge.second : edge.first, t});
         } else {
             sheets.unite(uses[0].first, uses[1].first);
@@ -113,6 +125,18 @@ std::vector<int> CrackMesh::refreshUnknowns() {
         sheetOfTriangle_[t] = it->second;
     }
     sheetCount_ = static_cast<int>(sheetOfRoot.size());
+    // Boundary nodes on surface nodes are mouth nodes, not front, except next to a front node
+    // off the surface: there the front meets the surface.
+    std::vector<char> frontEnd(nodes_.size(), 0);
+    for (const FrontEdge& e : boundaryEdges_) {
+        if (surfaceNode_[e.a] >= 0 && surfaceNode_[e.b] < 0 && unknown_[e.a] < 0) frontEnd[e.a] = 1;
+        if (surfaceNode_[e.b] >= 0 && surfaceNode_[e.a] < 0 && unknown_[e.b] < 0) frontEnd[e.b] = 1;
+    }
+    for (int i = 0; i < nodeCount(); ++i)
+        if (surfaceNode_[i] >= 0 && !frontEnd[i]) onFront[i] = 0;
+    frontEdges_.clear();
+    for (const FrontEdge& e : boundaryEdges_)
+        if (onFront[e.a] && onFront[e.b]) frontEdges_.push_back(e);
     std::vector<int> activated;
     for (int i = 0; i < nodeCount(); ++i) {
         if (onFront[i] && unknown_[i] >= 0)

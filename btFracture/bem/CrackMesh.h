@@ -2,11 +2,16 @@
 #pragma once
 // All crack sheets of one body (paper §3): single sheets of flat triangles inside the body,
 // oriented so that each triangle's normal is the crack normal n_c. The unknown on a node is
-// the crack opening displacement COD = u+ - u- (+ on the side n_c points to); it is zero on
-// front nodes (the sheet's boundary), so only interior nodes carry unknowns. Sheets only grow
-// by triangles attached at the front, so an interior node's support never changes and the
-// crack blocks can be extended incrementally.
+// the crack opening displacement COD = u+ - u- (+ on the side n_c points to). It is zero on
+// front nodes (the sheet's boundary inside the body). A sheet that reaches the body's surface
+// along surface edges opens there: its boundary nodes on surface nodes are mouth nodes and
+// carry unknowns like interior nodes, except where the front meets the surface (a node on the
+// surface next to a front node inside); see FORMULATION.md, "Cracks". Boundary nodes anywhere
+// else, off the surface's nodes or outside the body, are front. Sheets only grow by triangles
+// attached at their boundary, so an unknown node's support never changes and the crack blocks
+// can be extended incrementally.
 #include <btFracture/bem/PairIntegrals.h>
+#include <btFracture/bem/SurfaceMesh.h>
 
 #include <Eigen/Core>
 
@@ -19,10 +24,14 @@ class CrackMesh {
 public:
     int addNode(const Eigen::Vector3d& position);  // body frame [m]; returns the node index
     int addTriangle(int a, int b, int c);          // counter-clockwise around n_c
-    // Recomputes the front, numbers the unknowns of nodes that became interior since the last
-    // call (existing unknowns keep their numbers) and returns those nodes. Throws if a sheet
-    // is not an edge-manifold open surface.
+    // Recomputes the front, numbers the unknowns of nodes that became interior or mouth since
+    // the last call (existing unknowns keep their numbers) and returns those nodes. Throws if a
+    // sheet is not an edge-manifold open surface. Only nodes matched to a body's surface node
+    // by an earlier call with that body can be mouth nodes.
     std::vector<int> refreshUnknowns();
+    // The same after matching the nodes not matched yet (nodes never move) to the surface nodes
+    // of `body` they lie on (within 1e-9 of its radius).
+    std::vector<int> refreshUnknowns(const SurfaceMesh& body);
 
     int nodeCount() const { return static_cast<int>(nodes_.size()); }
     int triangleCount() const { return static_cast<int>(triangles_.size()); }
@@ -33,14 +42,21 @@ public:
     Eigen::Vector3d normal(int t) const;  // crack normal n_c
 
     bool isFront(int i) const { return unknown_[i] < 0; }
-    int unknownOf(int i) const { return unknown_[i]; }  // -1 on the front
+    // On a surface node and carrying an opening (not where the front meets the surface).
+    bool isMouth(int i) const { return surfaceNode_[i] >= 0 && unknown_[i] >= 0; }
+    int surfaceNodeOf(int i) const { return surfaceNode_[i]; }  // -1: none (or not matched yet)
+    int unknownOf(int i) const { return unknown_[i]; }          // -1 on the front
     int unknownCount() const { return unknownCount_; }
     const std::vector<int>& nodeOfUnknown() const { return nodeOfUnknown_; }
-    // Front edges (a, b, t): the boundary edge a-b of triangle t, a -> b in t's orientation.
+    // Boundary edges (a, b, t): the boundary edge a-b of triangle t, a -> b in t's orientation.
+    // Front edges are those with two front nodes (zero opening at both ends, where the stress
+    // intensity is measured); the others have a mouth node at one end (the front's ends, where
+    // it crosses the surface) or at both (the mouth).
     struct FrontEdge {
         int a, b, triangle;
     };
     const std::vector<FrontEdge>& frontEdges() const { return frontEdges_; }
+    const std::vector<FrontEdge>& boundaryEdges() const { return boundaryEdges_; }
     // Sheets are the edge-connected components, numbered by their lowest triangle (as of the last
     // refreshUnknowns()).
     int sheetOf(int t) const { return sheetOfTriangle_[t]; }
@@ -60,8 +76,10 @@ private:
     std::vector<std::array<int, 3>> triangles_;
     std::vector<std::vector<int>> nodeTriangles_;
     std::vector<int> unknown_;
+    static constexpr int kUnclassified = -2;
+    std::vector<int> surfaceNode_;  // surface node the crack node lies on, -1 none
     std::vector<int> nodeOfUnknown_;
-    std::vector<FrontEdge> frontEdges_;
+    std::vector<FrontEdge> frontEdges_, boundaryEdges_;
     std::vector<int> sheetOfTriangle_;
     int unknownCount_ = 0;
     int sheetCount_ = 0;

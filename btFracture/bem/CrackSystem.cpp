@@ -15,14 +15,72 @@
 namespace btfracture {
 namespace {
 
-// Crack triangles in the support of the given unknowns, sorted.
-std::vector<int> supportOf(const CrackMesh& cracks, const std::vector<int>& unknowns) {
+// One triangle carrying (parts of) crack basis functions: a crack triangle (crack hats), or a
+// surface triangle on the + side of a mouth node (the surface hat of that node cut along the
+// mouth, FORMULATION.md). Panel ids: surface node ids for surface nodes and mouth nodes (which
+// lie on one), nodeCount + crack node for the others, so that pairs sharing a node get the
+// singular rules.
+struct BasisElement {
+    QuadraturePanel panel;
+    std::array<Eigen::Vector3d, 3> curl;
+    std::array<int, 3> unknown;  // crack unknown of each corner, -1: none
+    int surfaceTriangle;         // -1 for a crack triangle
+};
+
+// The elements of the given unknowns' basis functions.
+std::vector<BasisElement> basisElements(const SurfaceMesh& mesh, const CrackMesh& cracks,
+                                        const std::vector<int>& unknowns, const QuadratureSettings& q) {
+    const int n = mesh.nodeCount();
+    auto idOf = [&](int node) {
+        return cracks.surfaceNodeOf(node) >= 0 ? cracks.surfaceNodeOf(node) : node + n;
+    };
     std::vector<int> triangles;
     for (int k : unknowns)
         for (int t : cracks.trianglesAtNode(cracks.nodeOfUnknown()[k])) triangles.push_back(t);
     std::sort(triangles.begin(), triangles.end());
     triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
-    return triangles;
+    std::vector<BasisElement> out;
+    for (int t : triangles) {
+        const auto& tri = cracks.triangle(t);
+        Panel panel = cracks.panel(t, 0);
+        for (int k = 0; k < 3; ++k) panel.ids[k] = idOf(tri[k]);
+        BasisElement e{QuadraturePanel(panel, q), {}, {}, -1};
+        for (int k = 0; k < 3; ++k) {
+            e.curl[k] = cracks.operatorCurl(t, k);
+            e.unknown[k] = cracks.unknownOf(tri[k]);
+        }
+        out.push_back(e);
+    }
+    std::map<int, int> halfHat;  // surface triangle -> element
+    for (int k : unknowns) {
+        const int node = cracks.nodeOfUnknown()[k];
+        if (!cracks.isMouth(node)) continue;
+        const int s = idOf(node);
+        Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+        for (int t : cracks.trianglesAtNode(node)) normal += cracks.normal(t);
+        for (int tau : mesh.trianglesAtNode(s)) {
+            if ((mesh.centroid(tau) - cracks.node(node)).dot(normal) <= 0.0) continue;
+            auto it = halfHat.find(tau);
+            if (it == halfHat.end()) {
+                it = halfHat.emplace(tau, static_cast<int>(out.size())).first;
+                out.push_back({QuadraturePanel(panelOf(mesh, tau), q), {}, {-1, -1, -1}, tau});
+            }
+            BasisElement& e = out[it->second];
+            for (int c = 0; c < 3; ++c)
+                if (mesh.triangle(tau)[c] == s) {
+                    e.curl[c] = mesh.hatCurl(tau, c);
+                    e.unknown[c] = k;
+                }
+        }
+    }
+    return out;
+}
+
+PairIntegrals integrate(const QuadraturePanel& x, const QuadraturePanel& y, const QuadratureSettings& q,
+                        bool doubleLayer) {
+    if (relationOf(x.panel, y.panel) == PairRelation::Separated)
+        return integrateSeparated(x, y, q, doubleLayer);
+    return integrateSingular(x.panel, y.panel, q);
 }
 
 }  // namespace
@@ -38,26 +96,16 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
     const bool withLoad = blocks == CouplingBlocks::SurfaceAndLoad;
     CrackSurfaceCoupling out{Eigen::MatrixXd::Zero(3 * n, 3 * unknowns.size()),
                              Eigen::MatrixXd::Zero(withLoad ? 3 * unknowns.size() : 0, withLoad ? 3 * m : 0)};
-    // Per support triangle, once: its panel, and per corner the operator curl and the local
-    // column of its unknown (-1: not one of `unknowns`).
-    struct CrackSide {
-        QuadraturePanel panel;
-        std::array<Eigen::Vector3d, 3> curl;
-        std::array<int, 3> column;
-    };
-    std::vector<CrackSide> support;
-    for (int kappa : supportOf(cracks, unknowns)) {
-        CrackSide side{QuadraturePanel(cracks.panel(kappa, n), q), {}, {-1, -1, -1}};
+    const std::vector<BasisElement> support = basisElements(mesh, cracks, unknowns, q);
+    std::vector<std::array<int, 3>> columns(support.size());
+    for (std::size_t e = 0; e < support.size(); ++e)
         for (int b = 0; b < 3; ++b) {
-            side.curl[b] = cracks.operatorCurl(kappa, b);
-            const auto it = column.find(cracks.unknownOf(cracks.triangle(kappa)[b]));
-            if (it != column.end()) side.column[b] = 3 * it->second;
+            const auto it = column.find(support[e].unknown[b]);
+            columns[e][b] = it == column.end() ? -1 : 3 * it->second;
         }
-        support.push_back(side);
-    }
-    // Each crack triangle writes only its own unknowns' columns of C and rows of G, but two
-    // support triangles share unknowns: loop over surface triangles in parallel instead, each
-    // writing its own nodes' rows of C (coloured) and its own columns of G.
+    // Each element writes only its own unknowns' columns of C and rows of G, but two elements
+    // share unknowns: loop over surface triangles in parallel instead, each writing its own
+    // nodes' rows of C (coloured) and its own columns of G.
     const std::vector<QuadraturePanel> surfacePanels = quadraturePanels(mesh, q);
     const auto colours = colourTrianglesByNodes(mesh);
     for (const auto& group : colours) {
@@ -68,12 +116,13 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
             const QuadraturePanel& surface = surfacePanels[sigma];
             std::array<Eigen::Vector3d, 3> surfaceCurl;
             for (int a = 0; a < 3; ++a) surfaceCurl[a] = mesh.hatCurl(sigma, a);
-            for (const CrackSide& crack : support) {
-                // x on the surface, y on the crack; crack ids follow the surface's, no shared node.
-                const PairIntegrals pi = integrateSeparated(surface, crack.panel, q, withLoad);
+            for (std::size_t e = 0; e < support.size(); ++e) {
+                const BasisElement& crack = support[e];
+                // x on the surface, y on the element.
+                const PairIntegrals pi = integrate(surface, crack.panel, q, withLoad);
                 const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
                 for (int b = 0; b < 3; ++b) {
-                    const int col = crack.column[b];
+                    const int col = columns[e][b];
                     if (col < 0) continue;
                     const Eigen::Vector3d& d = crack.curl[b];
                     double P[9];
@@ -83,10 +132,13 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
                         addStiffnessBlock(surfaceCurl[a].data(), d.data(), P, mu * coeff.a, 1.0,
                                           [&](int i, int j, double v) { out.C(row + i, col + j) += v; });
                     }
-                    // Crack test hat against the traction of sigma (no mass term off the surface).
-                    if (withLoad)
-                        addLoadBlock(d.data(), coeff, mu, -pi.doubleLayerXY[b],
+                    // Test function on the element against the traction of sigma (the mass term
+                    // only where a cut surface hat lies on sigma itself).
+                    if (withLoad) {
+                        const double mass = crack.surfaceTriangle == sigma ? mesh.area(sigma) / 6.0 : 0.0;
+                        addLoadBlock(d.data(), coeff, mu, mass - pi.doubleLayerXY[b],
                                      [&](int i, int j, double v) { out.G(col + i, 3 * sigma + j) += v; });
+                    }
                 }
             }
         }
@@ -103,7 +155,7 @@ CrackSystem::CrackSystem(const ElasticSolver& solver, CrackMesh& cracks) : solve
 }
 
 int CrackSystem::update() {
-    cracks_.refreshUnknowns();
+    cracks_.refreshUnknowns(solver_.mesh());
     const int total = cracks_.unknownCount();
     if (total == assembledUnknowns_) return 0;
     std::vector<int> fresh(total - assembledUnknowns_);
@@ -123,52 +175,52 @@ int CrackSystem::update() {
     D_.conservativeResize(new3, new3);
     D_.rightCols(new3 - old3).setZero();
     D_.bottomRows(new3 - old3).setZero();
-    const SurfaceMesh& mesh = solver_.mesh();
-    const int offset = mesh.nodeCount();
     const double mu = solver_.material().shearModulus(), nu = solver_.material().poissonRatio();
-    const std::vector<int> support = supportOf(cracks_, fresh);
-    std::vector<char> inSupport(cracks_.triangleCount(), 0);
-    for (int t : support) inSupport[t] = 1;
+    const QuadratureSettings& q = solver_.settings().quadrature;
+    std::vector<int> all(total);
+    for (int k = 0; k < total; ++k) all[k] = k;
+    const std::vector<BasisElement> elements = basisElements(solver_.mesh(), cracks_, all, q);
     const int first = assembledUnknowns_;
+    auto touchesFresh = [&](const BasisElement& e) {
+        return std::any_of(e.unknown.begin(), e.unknown.end(), [&](int k) { return k >= first; });
+    };
     // Each unordered pair once (bit-exact symmetry of D); its block and the transposed block.
-    auto addBlock = [&](int kappa, int lambda, const PairCoefficients& coeff, bool transposed) {
+    auto addBlock = [&](const BasisElement& x, const BasisElement& y, const PairCoefficients& coeff,
+                        bool transposed) {
         for (int b = 0; b < 3; ++b) {
-            const int l = cracks_.unknownOf(cracks_.triangle(lambda)[b]);
+            const int l = y.unknown[b];
             if (l < 0) continue;
-            const Eigen::Vector3d d = cracks_.operatorCurl(lambda, b);
+            const Eigen::Vector3d& d = y.curl[b];
             double P[9];
             symTimesCross(coeff.L, d.data(), P);
             for (int a = 0; a < 3; ++a) {
-                const int k = cracks_.unknownOf(cracks_.triangle(kappa)[a]);
+                const int k = x.unknown[a];
                 if (k < 0 || (k < first && l < first)) continue;
-                const Eigen::Vector3d c = cracks_.operatorCurl(kappa, a);
-                addStiffnessBlock(c.data(), d.data(), P, mu * coeff.a, 1.0, [&](int i, int j, double v) {
-                    if (transposed)
-                        D_(3 * l + j, 3 * k + i) += v;
-                    else
-                        D_(3 * k + i, 3 * l + j) += v;
-                });
+                addStiffnessBlock(x.curl[a].data(), d.data(), P, mu * coeff.a, 1.0,
+                                  [&](int i, int j, double v) {
+                                      if (transposed)
+                                          D_(3 * l + j, 3 * k + i) += v;
+                                      else
+                                          D_(3 * k + i, 3 * l + j) += v;
+                                  });
             }
         }
     };
-    const QuadratureSettings& q = solver_.settings().quadrature;
-    std::vector<QuadraturePanel> panels;
-    panels.reserve(cracks_.triangleCount());
-    for (int kappa = 0; kappa < cracks_.triangleCount(); ++kappa)
-        panels.emplace_back(cracks_.panel(kappa, offset), q);
     // The pairs' integrals in parallel, then their blocks added in pair order (deterministic).
     std::vector<std::pair<int, int>> pairs;
-    for (int kappa = 0; kappa < cracks_.triangleCount(); ++kappa)
-        for (int lambda = kappa; lambda < cracks_.triangleCount(); ++lambda)
-            if (inSupport[kappa] || inSupport[lambda]) pairs.emplace_back(kappa, lambda);
+    const int count = static_cast<int>(elements.size());
+    for (int x = 0; x < count; ++x)
+        for (int y = x; y < count; ++y)
+            if (touchesFresh(elements[x]) || touchesFresh(elements[y])) pairs.emplace_back(x, y);
     std::vector<PairCoefficients> coeffs(pairs.size());
 #pragma omp parallel for schedule(dynamic, 64)
     for (int i = 0; i < static_cast<int>(pairs.size()); ++i)
-        coeffs[i] = coefficientsOf(integratePair(panels[pairs[i].first], panels[pairs[i].second], q), mu, nu);
+        coeffs[i] = coefficientsOf(
+            integratePair(elements[pairs[i].first].panel, elements[pairs[i].second].panel, q), mu, nu);
     for (std::size_t i = 0; i < pairs.size(); ++i) {
-        const auto [kappa, lambda] = pairs[i];
-        addBlock(kappa, lambda, coeffs[i], false);
-        if (lambda != kappa) addBlock(kappa, lambda, coeffs[i], true);
+        const auto [x, y] = pairs[i];
+        addBlock(elements[x], elements[y], coeffs[i], false);
+        if (y != x) addBlock(elements[x], elements[y], coeffs[i], true);
     }
 
     // Schur complement: C, H and D keep their old columns, so old-old entries keep their values.

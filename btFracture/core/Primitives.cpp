@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <string>
 
@@ -23,15 +24,25 @@ TriangleMesh makeBox(const Eigen::Vector3d& h, double cellsPerUnit, const std::s
 TriangleMesh makeBox(const Eigen::Vector3d& h, int nx, int ny, int nz) {
     if (!(h.minCoeff() > 0.0) || nx < 1 || ny < 1 || nz < 1)
         throw Error("makeBox: half extents must be positive and cell counts at least 1");
+    std::array<std::vector<double>, 3> lines;
+    const int n[3] = {nx, ny, nz};
+    for (int a = 0; a < 3; ++a)
+        for (int g = 0; g <= n[a]; ++g) lines[a].push_back(h[a] * (2.0 * g / n[a] - 1.0));
+    return makeGridBox(lines);
+}
+
+TriangleMesh makeGridBox(const std::array<std::vector<double>, 3>& lines) {
+    for (const auto& l : lines)
+        if (l.size() < 2 || std::adjacent_find(l.begin(), l.end(), std::greater_equal<double>()) != l.end())
+            throw Error("makeGridBox: each axis needs at least two strictly increasing grid lines");
     TriangleMesh mesh;
     mesh.name = "box";
     std::map<std::array<int, 3>, int> index;  // integer lattice point -> vertex
-    const int n[3] = {nx, ny, nz};
+    const int n[3] = {static_cast<int>(lines[0].size()) - 1, static_cast<int>(lines[1].size()) - 1,
+                      static_cast<int>(lines[2].size()) - 1};
     auto vertex = [&](std::array<int, 3> g) {
         auto [it, inserted] = index.emplace(g, static_cast<int>(mesh.vertices.size()));
-        if (inserted)
-            mesh.vertices.push_back({h.x() * (2.0 * g[0] / nx - 1.0), h.y() * (2.0 * g[1] / ny - 1.0),
-                                     h.z() * (2.0 * g[2] / nz - 1.0)});
+        if (inserted) mesh.vertices.push_back({lines[0][g[0]], lines[1][g[1]], lines[2][g[2]]});
         return it->second;
     };
     // Face normal along axis a, side s (0: -, 1: +); (b, c) span the face so that b x c = +axis.

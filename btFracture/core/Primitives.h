@@ -4,7 +4,9 @@
 // primitives that need a surface mesh.
 #include <btFracture/core/TriangleMesh.h>
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace btfracture {
 
@@ -16,6 +18,10 @@ TriangleMesh makeBox(const Eigen::Vector3d& halfExtents, double cellsPerUnit = 0
 
 // Box with an explicit number of grid cells along x, y and z.
 TriangleMesh makeBox(const Eigen::Vector3d& halfExtents, int cellsX, int cellsY, int cellsZ);
+
+// Box whose faces are gridded along the given lines: lines[a] holds the increasing coordinates
+// (at least two; the first and last are the box's faces) of the grid planes normal to axis a.
+TriangleMesh makeGridBox(const std::array<std::vector<double>, 3>& lines);
 
 // Geodesic sphere of the given radius [m]: each icosahedron face split into frequency^2
 // triangles (20 f^2 in all), vertices projected onto the sphere. Frequency 2^k gives the

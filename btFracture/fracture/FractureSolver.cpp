@@ -30,7 +30,8 @@ FractureSolver::FractureSolver(const ElasticSolver& solver, MaterialField field,
 FractureSolver::~FractureSolver() = default;
 
 void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
-    cracks_.refreshUnknowns();  // cracks may have been added from outside (pre-cracks, carried cracks)
+    cracks_.refreshUnknowns(
+        solver_.mesh());  // cracks may have been added from outside (pre-cracks, carried cracks)
     triangleInBody_.clear();
     arrested_.resize(cracks_.nodeCount(), 0);
     tractions_ = q;
@@ -64,7 +65,7 @@ int FractureSolver::seed() {
                                  settings_.seedRadius, seeded_);
     arrested_.resize(cracks_.nodeCount(), 0);
     if (seeds > 0) {
-        const std::vector<int> fresh = cracks_.refreshUnknowns();
+        const std::vector<int> fresh = cracks_.refreshUnknowns(solver_.mesh());
         if (active_ == FractureMethod::Full) {
             full_->update();
             const CrackSystem::Solution s = full_->solve(tractions_);
@@ -211,7 +212,7 @@ FractureStepRecord FractureSolver::step(int index) {
 
 void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
                                       const std::map<int, double>& advanced) {
-    const std::vector<int> fresh = cracks_.refreshUnknowns();
+    const std::vector<int> fresh = cracks_.refreshUnknowns(solver_.mesh());
     // §4.3: the nodes the front just left get the opening that inverting the displacement
     // correlation gives (FULL keeps them for a HYBRID switch, EST corrects the load with them).
     Eigen::VectorXd cod(3 * fresh.size());

@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: Zlib
+#include <btFracture/bem/CrackSystem.h>
 #include <btFracture/core/PortableMath.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/fracture/CrackSeed.h>
 #include <btFracture/fracture/ReferenceCracks.h>
+#include <btFracture/fracture/StressIntensity.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 namespace btfracture {
 
@@ -27,6 +32,159 @@ PennyCrackSifs pennyCrackSifs(double stress, double radius, double alpha, double
 
 TriangleMesh pennyCrackCube(double radius) {
     return makeBox(Eigen::Vector3d(4 * radius, 4 * radius, 4 * radius), 6, 6, 6);
+}
+
+namespace {
+
+// Grid lines on [lo, hi]: spacing h on [f0, f1], growing by 1.5 per cell away from it (the
+// last cell towards each end stretched or merged to land on it).
+std::vector<double> gradedLines(double lo, double hi, double f0, double f1, double h) {
+    std::vector<double> lines;
+    const int n = std::max(1, static_cast<int>(std::ceil((f1 - f0) / h - 1e-9)));
+    for (int i = 0; i <= n; ++i) lines.push_back(f0 + (f1 - f0) * i / n);
+    auto march = [h](double from, double to) {  // lines after `from` up to `to` (included)
+        std::vector<double> out;
+        const double sign = to > from ? 1.0 : -1.0;
+        double x = from, step = h;
+        while (sign * (to - x) > 1e-12) {
+            step *= 1.5;
+            if (sign * (to - (x + sign * step)) < 0.5 * step) break;
+            x += sign * step;
+            out.push_back(x);
+        }
+        out.push_back(to);
+        return out;
+    };
+    if (f0 > lo)
+        for (double x : march(f0, lo)) lines.push_back(x);
+    if (f1 < hi)
+        for (double x : march(f1, hi)) lines.push_back(x);
+    std::sort(lines.begin(), lines.end());
+    return lines;
+}
+
+// u values from `to` down to `from` in steps of h (count = round((to - from) / h)), then
+// `extension` h beyond `from`; with ascending order.
+std::vector<double> sheetLines(double from, double to, double h, double extension) {
+    const int n = std::max(1, static_cast<int>(std::lround((to - from) / h)));
+    std::vector<double> out;
+    if (extension > 0.0) out.push_back(from - extension * (to - from) / n);
+    for (int i = 0; i <= n; ++i) out.push_back(from + (to - from) * i / n);
+    return out;
+}
+
+}  // namespace
+
+SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension) {
+    const double b = 0.1, a = ratio * b, thickness = 0.5 * b, sigma = 1e6;
+    const double h = a / elementsPerDepth;
+    SurfaceCrackCase c;
+    char name[64];
+    std::snprintf(name, sizeof name, "edge crack a/b = %.2f", ratio);
+    c.name = name;
+    c.body = makeGridBox({gradedLines(0.0, b, 0.0, a + h, h), gradedLines(-2 * b, 2 * b, -h, h, h),
+                          gradedLines(-0.5 * thickness, 0.5 * thickness, -0.5 * thickness, 0.5 * thickness,
+                                      thickness / (2 * std::ceil(0.25 * thickness / h)))});
+    c.origin = Eigen::Vector3d::Zero();
+    c.U = Eigen::Vector3d::UnitX();
+    c.V = Eigen::Vector3d::UnitZ();
+    c.along = sheetLines(0.0, a, h, extension);
+    const int acrossCells = 2 * static_cast<int>(std::ceil(0.25 * thickness / h));
+    std::vector<double> across;
+    if (extension > 0.0) across.push_back(-0.5 * thickness - extension * thickness / acrossCells);
+    for (int i = 0; i <= acrossCells; ++i) across.push_back(thickness * (double(i) / acrossCells - 0.5));
+    if (extension > 0.0) across.push_back(-across.front());
+    c.across = across;
+    c.midFront = Eigen::Vector3d(a, 0.0, 0.0);
+    Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();
+    stress(1, 1) = sigma;
+    c.tractions = [stress](const SurfaceMesh& mesh) { return uniformStressTractions(mesh, stress); };
+    const double F = 1.122 - 0.231 * ratio + 10.550 * ratio * ratio - 21.710 * std::pow(ratio, 3) +
+                     30.382 * std::pow(ratio, 4);
+    c.exactKI = sigma * std::sqrt(M_PI * a) * F;
+    return c;
+}
+
+SurfaceCrackCase notchedBeamCase(int elementsPerDepth, double extension) {
+    const double W = 0.1, S = 4 * W, B = 0.5 * W, a = 0.5 * W, P = 1e4;
+    const double h = a / elementsPerDepth, patch = 0.05 * W;  // half width of each load patch
+    SurfaceCrackCase c;
+    c.name = "notched beam a/W = 0.5";
+    std::vector<double> x = gradedLines(-0.5 * S - 0.25 * W, 0.5 * S + 0.25 * W, -h, h, h);
+    for (double side : {-1.0, 1.0}) {  // lines on the support patches' edges
+        x.erase(std::remove_if(x.begin(), x.end(),
+                               [&](double v) { return std::abs(v - side * 0.5 * S) < 1.5 * patch; }),
+                x.end());
+        for (double d : {-patch, patch}) x.push_back(side * 0.5 * S + d);
+    }
+    std::sort(x.begin(), x.end());
+    const int acrossCells = 2 * static_cast<int>(std::ceil(0.5 * B / h));
+    std::vector<double> z;
+    for (int i = 0; i <= acrossCells; ++i) z.push_back(B * (double(i) / acrossCells - 0.5));
+    c.body = makeGridBox({x, gradedLines(0.0, W, 0.0, a + h, h), z});
+    c.origin = Eigen::Vector3d::Zero();
+    c.U = Eigen::Vector3d::UnitY();
+    c.V = Eigen::Vector3d::UnitZ();
+    c.along = sheetLines(0.0, a, h, extension);
+    std::vector<double> across = z;
+    if (extension > 0.0) {
+        across.insert(across.begin(), -0.5 * B - extension * B / acrossCells);
+        across.push_back(0.5 * B + extension * B / acrossCells);
+    }
+    c.across = across;
+    c.midFront = Eigen::Vector3d(0.0, a, 0.0);
+    c.tractions = [=](const SurfaceMesh& mesh) {
+        // Top patch: the cells next to the crack plane, |x| < h (P down); bottom patches |x -+ S/2| < patch
+        // (P/2 up each).
+        Eigen::VectorXd q = Eigen::VectorXd::Zero(3 * mesh.triangleCount());
+        std::vector<int> top, left, right;
+        double topArea = 0.0, leftArea = 0.0, rightArea = 0.0;
+        for (int t = 0; t < mesh.triangleCount(); ++t) {
+            const Eigen::Vector3d p = mesh.centroid(t) + mesh.offset();
+            if (mesh.normal(t).y() > 0.99 && std::abs(p.x()) < h) top.push_back(t), topArea += mesh.area(t);
+            if (mesh.normal(t).y() < -0.99 && std::abs(p.x() + 0.5 * S) < patch)
+                left.push_back(t), leftArea += mesh.area(t);
+            if (mesh.normal(t).y() < -0.99 && std::abs(p.x() - 0.5 * S) < patch)
+                right.push_back(t), rightArea += mesh.area(t);
+        }
+        for (int t : top) q(3 * t + 1) = -P / topArea;
+        for (int t : left) q(3 * t + 1) = 0.5 * P / leftArea;
+        for (int t : right) q(3 * t + 1) = 0.5 * P / rightArea;
+        return q;
+    };
+    const double r = a / W;
+    const double f = 3.0 * std::sqrt(r) * (1.99 - r * (1 - r) * (2.15 - 3.93 * r + 2.7 * r * r)) /
+                     (2.0 * (1 + 2 * r) * std::pow(1 - r, 1.5));
+    c.exactKI = P * S / (B * std::pow(W, 1.5)) * f;
+    return c;
+}
+
+SurfaceCrackResult solveSurfaceCrack(const SurfaceCrackCase& c, const Material& material) {
+    const ElasticSolver solver{SurfaceMesh(c.body), material};
+    const Eigen::Vector3d shift = -solver.mesh().offset();
+    CrackMesh cracks;
+    std::vector<std::vector<int>> node(c.along.size(), std::vector<int>(c.across.size()));
+    for (std::size_t i = 0; i < c.along.size(); ++i)
+        for (std::size_t j = 0; j < c.across.size(); ++j)
+            node[i][j] = cracks.addNode(c.origin + c.along[i] * c.U + c.across[j] * c.V + shift);
+    for (std::size_t i = 0; i + 1 < c.along.size(); ++i)
+        for (std::size_t j = 0; j + 1 < c.across.size(); ++j) {
+            cracks.addTriangle(node[i][j], node[i + 1][j], node[i + 1][j + 1]);
+            cracks.addTriangle(node[i][j], node[i + 1][j + 1], node[i][j + 1]);
+        }
+    CrackSystem system(solver, cracks);
+    system.update();
+    const CrackSystem::Solution s = system.solve(c.tractions(solver.mesh()));
+    const auto sifs = displacementCorrelation(cracks, system.nodalOpenings(s), material);
+    SurfaceCrackResult out;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const FrontSifs& f : sifs) {
+        const double d = (f.position - shift - c.midFront).norm();
+        if (d < nearest) nearest = d, out.KI = f.KI;
+    }
+    out.surfaceTriangles = solver.mesh().triangleCount();
+    out.crackUnknowns = cracks.unknownCount();
+    return out;
 }
 
 TriangleMesh growthSlab() {

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Zlib
 #pragma once
-// Reference crack problems shared by the tests (tests/crack) and the accuracy study
-// (bench/accuracy): the penny and inclined penny crack with their closed forms (Kassir & Sih,
-// validation.md (a)), and the pre-cracked slab of the paper's mode-I / mode-II growth tests
-// (§6, Figs. 3-5). Units: SI.
+// Reference crack problems shared by the tests (tests/crack) and the benchmarks (bench/accuracy,
+// bench/sif_validation): the penny and inclined penny crack with their closed forms (Kassir &
+// Sih, validation.md (a)), the surface-breaking edge crack and notched beam with their handbook
+// forms, and the pre-cracked slab of the paper's mode-I / mode-II growth tests (§6, Figs. 3-5).
+// Units: SI.
 #include <btFracture/bem/CrackMesh.h>
 #include <btFracture/bem/SurfaceMesh.h>
 #include <btFracture/core/FractureSettings.h>
@@ -11,6 +12,10 @@
 #include <btFracture/core/TriangleMesh.h>
 
 #include <Eigen/Core>
+
+#include <functional>
+#include <string>
+#include <vector>
 
 namespace btfracture {
 
@@ -29,6 +34,36 @@ PennyCrackSifs pennyCrackSifs(double stress, double radius, double alpha, double
 // The penny-crack body: a cube of side 8 a (6 x 6 cells per face), large enough that the free
 // surface changes K_I by about 1 %.
 TriangleMesh pennyCrackCube(double radius);
+
+// Surface-breaking through cracks, solved by FULL: a planar sheet from the body's surface to a
+// straight front across the whole thickness, poking `extension` elements past the surface (0:
+// ending on it). K_I is read at the front node nearest mid-thickness.
+struct SurfaceCrackCase {
+    std::string name;
+    TriangleMesh body;  // in the case's own coordinates
+    // The sheet: origin + u U + v V for every u in `along` (depth, the front at the last) and v in
+    // `across`, crack normal U x V; own coordinates.
+    Eigen::Vector3d origin, U, V;
+    std::vector<double> along, across;
+    Eigen::Vector3d midFront;  // own coordinates
+    std::function<Eigen::VectorXd(const SurfaceMesh&)> tractions;
+    double exactKI = 0.0;  // [Pa m^(1/2)]
+};
+
+// Plate of width b (x), height 4 b (y) and thickness b/2 (z) under uniform tension sigma along y,
+// straight edge crack of depth a = ratio b from the face x = 0; h = a / elementsPerDepth on the
+// crack and the surface near it. Exact: sigma sqrt(pi a) F(a/b) (Tada's fit, 0.5 % for a/b <= 0.6).
+SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension = 0.0);
+// ASTM E399 single-edge-notched beam in three-point bending: depth W (y), span S = 4 W, thickness
+// B = W/2, a/W = 0.5, load P on a patch of the top face over the crack, P/2 on a patch over each
+// support; h = a / elementsPerDepth near the crack. Exact: P S / (B W^1.5) f(a/W).
+SurfaceCrackCase notchedBeamCase(int elementsPerDepth, double extension = 0.0);
+
+struct SurfaceCrackResult {
+    double KI = 0.0;  // FULL, displacement correlation at the front node nearest mid-thickness
+    int surfaceTriangles = 0, crackUnknowns = 0;
+};
+SurfaceCrackResult solveSurfaceCrack(const SurfaceCrackCase& c, const Material& material);
 
 // The growth tests: a 20 x 10 x 6 cm slab (360 triangles), PMMA-like stiffness with high
 // strength (no new seeds) and tiny toughness (every front node grows), a two-ring disc pre-crack

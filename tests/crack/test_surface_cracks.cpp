@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: Zlib
+// Surface-breaking cracks in FULL (bench/sif_validation's cases): the mouth opens, and K_I at
+// mid-thickness matches the handbook values, which are checked against the published tables.
+#include <btFracture/fracture/ReferenceCracks.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace btfracture;
+
+namespace {
+
+const Material kMaterial(1e9, 0.3, 1000.0, 1e7, 1e6, 2.0, "test");
+
+double relativeError(const SurfaceCrackCase& c) {
+    const SurfaceCrackResult r = solveSurfaceCrack(c, kMaterial);
+    std::printf("%s: %d surface triangles, %d crack unknowns, K_I / exact %.4f\n", c.name.c_str(),
+                r.surfaceTriangles, r.crackUnknowns, r.KI / c.exactKI);
+    return r.KI / c.exactKI - 1.0;
+}
+
+}  // namespace
+
+// Through edge crack, 4 elements along the depth: measured +2.5 % (a/b = 0.2) and +5.1 % (0.4);
+// at 8 elements +4.2 % and +6.5 % (the mid-thickness K_I of the 3D plate sits a few per cent above
+// the plane-strain handbook value, and the displacement correlation reads high, as for the penny).
+// With the mouth held shut the same meshes gave 0.58 and 0.35 of the exact value.
+TEST(SurfaceCrack, EdgeCrackInTensionMatchesTada) {
+    EXPECT_NEAR(relativeError(edgeCrackCase(0.2, 4)), 0.0, 0.05);
+    EXPECT_NEAR(relativeError(edgeCrackCase(0.4, 4)), 0.0, 0.06);
+}
+
+// ASTM E399 notched beam, 8 elements along the depth: measured +3.4 % (+13 % at 4, +9 % at 6).
+TEST(SurfaceCrack, NotchedBeamInBendingMatchesAstm) {
+    EXPECT_NEAR(relativeError(notchedBeamCase(8)), 0.0, 0.05);
+}
+
+TEST(SurfaceCrackCases, HandbookValuesMatchThePublishedTables) {
+    // Tada, Paris & Irwin, The Stress Analysis of Cracks Handbook (2000), 2.10: F(0.2) = 1.37,
+    // F(0.4) = 2.11 (two decimals); ASTM E399 tabulates f(0.5) = 2.66 for the notched beam.
+    for (const auto& [ratio, F] : {std::pair{0.2, 1.37}, std::pair{0.4, 2.11}}) {
+        const SurfaceCrackCase c = edgeCrackCase(ratio, 2);
+        const double a = ratio * 0.1;
+        EXPECT_NEAR(c.exactKI / (1e6 * std::sqrt(M_PI * a)), F, 0.006) << c.name;
+    }
+    const SurfaceCrackCase beam = notchedBeamCase(2);
+    EXPECT_NEAR(beam.exactKI * 0.05 * std::pow(0.1, 1.5) / (1e4 * 0.4), 2.66, 0.006);
+}
+
+TEST(SurfaceCrackCases, SheetsReachTheSurfaceAndLoadsBalance) {
+    // The sheet starts on the body's surface and its front is inside; the beam's patch loads
+    // carry no net force or torque.
+    for (const SurfaceCrackCase& c : {edgeCrackCase(0.2, 4, 0.0), notchedBeamCase(4, 0.0)}) {
+        const SurfaceMesh mesh(c.body);
+        const Eigen::Vector3d mouth = c.origin + c.along.front() * c.U - mesh.offset();
+        EXPECT_LT(mesh.nearest(mouth).distance, 1e-12) << c.name;
+        EXPECT_TRUE(mesh.encloses(c.midFront - mesh.offset())) << c.name;
+        const Eigen::VectorXd q = c.tractions(mesh);
+        Eigen::Vector3d force = Eigen::Vector3d::Zero(), torque = Eigen::Vector3d::Zero();
+        double scale = 0.0;
+        for (int t = 0; t < mesh.triangleCount(); ++t) {
+            const Eigen::Vector3d f = mesh.area(t) * q.segment<3>(3 * t);
+            force += f;
+            torque += mesh.centroid(t).cross(f);
+            scale += f.norm();
+        }
+        EXPECT_LT(force.norm(), 1e-9 * scale) << c.name;
+        EXPECT_LT(torque.norm(), 1e-9 * scale * mesh.radius()) << c.name;
+    }
+}
