@@ -25,7 +25,7 @@ async function main(files) {
     const issues = report.issues;
     const info = report.info || {};
     console.log(`${file}: ${issues.numErrors} errors, ${issues.numWarnings} warnings, ${issues.numInfos} infos, ` +
-                `${info.meshCount} meshes, ${info.animationCount} animations, ${info.totalTriangleCount} triangles`);
+                `${info.drawCallCount} draw calls, ${info.animationCount} animations, ${info.totalTriangleCount} triangles`);
     for (const message of issues.messages)
       if (message.severity <= 1)
         console.log(`  ${message.severity === 0 ? 'error' : 'warning'} ${message.code} ${message.pointer || ''}: ` +
