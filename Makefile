@@ -8,7 +8,7 @@ SCENE     ?= demos/scenes/column_bunny.json
 
 FUZZ_BUILD ?= $(BUILD)-fuzz
 
-.PHONY: all deps configure build demo test test-native bench bench-accuracy bench-paper test-sanitize fuzz-build fuzz-short fuzz-long format format-check clean
+.PHONY: all deps configure build demo test test-native bench bench-accuracy bench-paper blender-check test-sanitize fuzz-build fuzz-short fuzz-long format format-check clean
 
 all: build
 
@@ -34,18 +34,34 @@ test-native:
 bench: build
 	@scripts/run-bench.sh $(BUILD)
 
+# Python 3 with matplotlib for the charts (Debian's python3-matplotlib is on /usr/bin/python3's
+# path, not necessarily on that of the first python3 on PATH); empty when there is none.
+CHART_PYTHON ?= $(firstword $(foreach p,/usr/bin/python3 python3,$(shell $(p) -c 'import matplotlib' 2>/dev/null && echo $(p))))
+
 # The accuracy-vs-time study: FULL / EST / HYBRID on every case, about 15 minutes on
-# 2 cores; runs.csv, steps.csv, table.md and the charts into ACCURACY_OUT.
+# 2 cores; runs.csv, steps.csv, table.md and the charts (scripts/charts/accuracy_charts.py)
+# into ACCURACY_OUT.
 ACCURACY_OUT ?= $(OUT)/accuracy
 bench-accuracy: build
 	@mkdir -p $(ACCURACY_OUT)
 	$(BUILD)/bench/accuracy_vs_time --out $(ACCURACY_OUT)
+	@if [ -n "$(CHART_PYTHON)" ]; then $(CHART_PYTHON) scripts/charts/accuracy_charts.py $(ACCURACY_OUT); \
+	 else echo "bench-accuracy: no Python 3 with matplotlib (python3-matplotlib): no charts"; fi
 
 # The paper's Table 1 scenes (column, bunny, brick, falling boxes, window) with timings per
 # event; about an hour on 2 cores. paper_table.md/.csv and one statistics.csv per scene.
 PAPER_OUT ?= bench/results
 bench-paper: build
 	nice -n 10 $(BUILD)/bench/paper_table --out $(PAPER_OUT)
+
+# The demo's scene.glb imported into Blender headless (Debian's blender, installed by
+# `scripts/install-deps.sh blender`): every body an object, every fragment with keyframes.
+# Blender is a large install, so this is not part of `make test`.
+blender-check: build
+	@scripts/install-deps.sh blender
+	$(BUILD)/demos/btfracture-run $(SCENE) --out $(OUT)/blender-check --outputs motion,gltf --quiet
+	blender -b --factory-startup --python scripts/blender_check.py -- $(OUT)/blender-check/scene.glb \
+	  $(OUT)/blender-check/motion.csv
 
 # The unit, scenario and stability suites under ASan + UBSan; the install/consumer tests and
 # the second-precision tree (a second whole library build) are left to `make test`. Release

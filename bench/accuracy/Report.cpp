@@ -2,13 +2,9 @@
 #include "Report.h"
 
 #include <btFracture/core/Error.h>
-#include <btFracture/io/Plot.h>
-#include <btFracture/io/PngFile.h>
 
 #include <cstdio>
 #include <fstream>
-#include <map>
-#include <set>
 
 using namespace btfracture;
 
@@ -32,23 +28,8 @@ std::ofstream open(const std::string& path) {
     return out;
 }
 
-int maxElements(const RunResult& r) {
-    return r.surfaceTriangles + r.crackTriangles;
-}
-
 bool isScene(const RunResult& r) {
     return r.fragments >= 0;
-}
-
-// The error a Pareto chart shows: SIF error for the solver-level cases, mean surface distance
-// (% of the body size) for the scenes (they have no SIF reference) [%].
-double paretoError(const RunResult& r) {
-    if (isScene(r)) return r.surfaceMean < 0.0 ? -1.0 : 100.0 * r.surfaceMean;
-    return r.sifError < 0.0 ? -1.0 : 100.0 * r.sifError;
-}
-
-double paretoTime(const RunResult& r) {
-    return isScene(r) ? r.engineSeconds() : r.fractureSeconds;
 }
 
 }  // namespace
@@ -108,85 +89,6 @@ void writeMarkdownTable(const std::string& path, const std::vector<RunResult>& r
             << " | " << (r.fragments < 0 ? std::string("-") : std::to_string(r.fragments)) << " | "
             << orDash(r.mottKs, "%.2f") << " |" << (r.note.empty() ? "" : " ") << "\n";
     }
-}
-
-std::vector<std::string> writeCharts(const std::string& directory, const std::vector<RunResult>& runs) {
-    std::vector<std::string> written;
-    auto save = [&](const std::string& name, const PlotSpec& spec) {
-        writePng(directory + "/" + name, plotChart(spec));
-        written.push_back(name);
-    };
-    // Pareto chart per case: one point per method.
-    std::vector<std::string> cases;
-    for (const auto& r : runs)
-        if (cases.empty() || cases.back() != r.caseName) cases.push_back(r.caseName);
-    for (const auto& c : cases) {
-        PlotSpec spec;
-        spec.width = 480;
-        spec.height = 320;
-        spec.title = c;
-        spec.x = {"time in fracture [s]", true};
-        bool scene = false;
-        for (const auto& r : runs) {
-            if (r.caseName != c) continue;
-            scene = isScene(r);
-            const double e = paretoError(r);
-            if (e < 0.0) continue;
-            PlotSeries s;
-            s.label = r.method;
-            s.xy = {{paretoTime(r), e}};
-            s.lines = false;
-            spec.series.push_back(s);
-        }
-        spec.y = {scene ? "fracture surface distance to FULL [% of size]" : "SIF error [%]", false};
-        save("pareto_" + c + ".png", spec);
-    }
-    // Step time against elements and against active front length: FULL and EST steps of the
-    // growth runs (HYBRID steps are one or the other).
-    PlotSpec byElements, byFront;
-    byElements.title = "time per propagation step vs BEM elements";
-    byElements.x = {"BEM elements (surface + crack triangles)", true};
-    byElements.y = {"step time [s]", true};
-    byFront.title = "time per propagation step vs active front length";
-    byFront.x = {"active front length [m]", false};
-    byFront.y = {"step time [s]", false};
-    int colour = 0, estColour = 0;
-    for (const auto& r : runs) {
-        if (r.stepSamples.size() < 3 || (r.method != "FULL" && r.method != "EST")) continue;
-        PlotSeries e, f;
-        e.label = f.label = r.caseName + " " + r.method;
-        e.colour = colour++;
-        if (r.method == "EST") f.colour = estColour++;
-        for (const auto& s : r.stepSamples) {
-            if (s.seconds < 1e-3) continue;  // the closing step in which every node arrested: no work
-            e.xy.emplace_back(s.elements, s.seconds);
-            if (s.estimated) f.xy.emplace_back(s.frontLength, s.seconds);
-        }
-        e.markers = f.markers = false;
-        byElements.series.push_back(e);
-        if (r.method == "EST") byFront.series.push_back(f);
-    }
-    byFront.title = "EST: time per propagation step vs active front length";
-    byElements.width = byFront.width = 800;
-    byElements.height = byFront.height = 520;
-    save("step_time_vs_elements.png", byElements);
-    save("step_time_vs_front_length.png", byFront);
-    // Peak memory against the largest BEM mesh of the run, per method family.
-    PlotSpec memory;
-    memory.title = "peak memory vs BEM elements";
-    memory.x = {"surface + crack triangles at the end", true};
-    memory.y = {"peak resident memory [MB]", true};
-    std::map<std::string, PlotSeries> families;
-    for (const auto& r : runs) {
-        const std::string family = r.method.rfind("HYB", 0) == 0 ? "HYBRID" : r.method;
-        PlotSeries& s = families[family];
-        s.label = family;
-        s.lines = false;
-        s.xy.emplace_back(maxElements(r), r.peakMegabytes);
-    }
-    for (auto& [name, s] : families) memory.series.push_back(s);
-    save("memory_vs_elements.png", memory);
-    return written;
 }
 
 }  // namespace accuracy

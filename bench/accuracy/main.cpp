@@ -2,7 +2,8 @@
 // Accuracy against time: every case runs with FULL, EST and - where cracks grow -
 // HYBRID at three thresholds (the surface plus 25 / 50 / 75 % of the crack triangles FULL
 // ended with, §4.4). Each run is a child process (peak memory per run). Writes runs.csv,
-// steps.csv, table.md and the charts into --out, and prints METRIC lines.
+// steps.csv and table.md into --out (make bench-accuracy then draws the charts with
+// scripts/charts/accuracy_charts.py), and prints METRIC lines.
 //   accuracy_vs_time [--out DIR] [--smoke] [--frames N] [--cases a,b,...] [--methods FULL,EST,...]
 //   [--verbose]
 // --smoke: penny, inclined penny and the mode-I growth test, FULL and EST only; exits non-zero when EST's
@@ -140,7 +141,6 @@ int main(int argc, char** argv) {
     writeRunsCsv(outDir + "/runs.csv", runs);
     writeStepsCsv(outDir + "/steps.csv", runs);
     writeMarkdownTable(outDir + "/table.md", runs);
-    if (!smoke) writeCharts(outDir, runs);
 
     auto find = [&](const std::string& name, const std::string& method) -> const RunResult* {
         for (const auto& r : runs)

@@ -532,7 +532,7 @@ Scene readFractureRbScene(const std::string& bulletFile, const std::string& csvF
     scene.world.dt = 1.0 / 250.0;
     scene.world.steps = 1000;
     if (importer.gravity) scene.world.gravity = *importer.gravity;
-    scene.effects.outputs.obj = scene.effects.outputs.csv = scene.effects.outputs.png = true;
+    scene.effects.outputs.csv = scene.effects.outputs.png = true;  // with motion and gltf
 
     std::map<std::string, size_t> bodyByKey;
     for (const FileObject& object : fileObjects(importer, file, bulletFile)) {

@@ -65,7 +65,7 @@ std::vector<FractureRbObject> parseFractureRbCsv(const std::string& text, const 
 //    triangle count, as FractureRB does), fracture method, and a mass from density x volume (as
 //    FractureRB recomputes it); settings btFracture has no use for are logged;
 //  - the world: the file's gravity, dt = 1/250 s and 1000 steps (FractureRB's defaults),
-//    outputs obj, csv and png.
+//    outputs motion, gltf, csv and png.
 // Throws btfracture::Error naming the file (and for CSV problems line and column) when a file
 // cannot be read, a shape is not supported or a CSV row names no object of the file.
 Scene readFractureRbScene(const std::string& bulletFile, const std::string& csvFile);

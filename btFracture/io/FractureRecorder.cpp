@@ -3,7 +3,6 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/io/MottHistogram.h>
-#include <btFracture/io/PngFile.h>
 
 #include <algorithm>
 #include <cmath>
@@ -84,8 +83,8 @@ std::vector<FractureRecorder::Fragment> FractureRecorder::fragments() const {
     return result;
 }
 
-bool FractureRecorder::writeFragmentVolumes(const std::string& prefix, const std::string& fragmentsCsv,
-                                            bool png) const {
+bool FractureRecorder::writeFragmentVolumes(const std::string& histogramCsv,
+                                            const std::string& fragmentsCsv) const {
     const std::vector<Fragment> pieces = fragments();
     if (pieces.empty()) return false;
     std::ofstream out(fragmentsCsv, std::ios::binary | std::ios::trunc);
@@ -101,8 +100,7 @@ bool FractureRecorder::writeFragmentVolumes(const std::string& prefix, const std
     out.close();
     if (out.fail()) throw Error("writing fragment list '" + fragmentsCsv + "' failed");
     const MottComparison comparison = compareWithMott(relative);
-    writeMottCsv(prefix + ".csv", comparison);
-    if (png) writePng(prefix + ".png", plotMott(comparison));
+    writeMottCsv(histogramCsv, comparison);
     return true;
 }
 

@@ -49,11 +49,11 @@ public:
     double fractureSeconds() const { return fractureSeconds_; }  // summed record.fractureSeconds
     double swapSeconds() const { return swapSeconds_; }          // summed record.swapSeconds
 
-    // Writes `prefix`.csv (and `prefix`.png when `png`) with the current fragments' relative
-    // volumes against Mott's distribution (io/MottHistogram.h), and `fragmentsCsv` listing them
+    // Writes `histogramCsv` with the current fragments' relative volumes against Mott's
+    // distribution (io/MottHistogram.h), and `fragmentsCsv` listing them
     // (name,original,generation,volume_m3,relative_volume). Returns false, writing nothing, when
     // there are no fragments.
-    bool writeFragmentVolumes(const std::string& prefix, const std::string& fragmentsCsv, bool png) const;
+    bool writeFragmentVolumes(const std::string& histogramCsv, const std::string& fragmentsCsv) const;
 
     // Writes the rows still waiting for their audits (energy columns empty) and closes the
     // statistics CSV (throws Error naming the path when writing failed).

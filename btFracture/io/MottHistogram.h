@@ -5,8 +5,7 @@
 //     P(V) = exp(-(zeta V)^(1/3)),  zeta = 6 / mean(V),
 // i.e. (zeta V)^(1/3) is exponentially distributed with mean 1, so the mean of V is 6 / zeta.
 // Volumes are relative to the original body's volume (dimensionless), as in the paper.
-#include <btFracture/io/Image.h>
-
+// The chart is scripts/charts/fragment_volumes.py's (matplotlib).
 #include <string>
 #include <vector>
 
@@ -37,9 +36,5 @@ MottComparison compareWithMott(std::vector<double> relativeVolumes, int binsPerD
 // CSV, one row per bin: bin_lower,bin_upper,count,mott_expected,survival_fragments,survival_mott
 // (both survival functions at the bin's lower edge). Throws Error naming the path on failure.
 void writeMottCsv(const std::string& path, const MottComparison& comparison);
-
-// Two panels: the histogram (bars) with Mott's expected counts (red), and the survival
-// functions of the fragments (blue steps) and of Mott (red), both over log10 relative volume.
-Image plotMott(const MottComparison& comparison, int width = 960, int height = 400);
 
 }  // namespace btfracture

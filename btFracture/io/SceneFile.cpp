@@ -204,12 +204,16 @@ private:
 
     SceneOutputs outputs(const Json& value, const std::string& path) const {
         requireObject(value, path, "an object");
-        allowOnly(value, path, {"directory", "obj_every_n_steps", "png_every_n_steps", "image"});
+        allowOnly(value, path,
+                  {"directory", "motion_every_n_steps", "obj_every_n_steps", "png_every_n_steps", "image"});
         SceneOutputs o;
         if (value.contains("directory")) {
             o.directory = text(value["directory"], child(path, "directory"));
             if (o.directory.empty()) fail(child(path, "directory"), "expected a non-empty folder path");
         }
+        if (value.contains("motion_every_n_steps"))
+            o.motionEveryNSteps =
+                integer(value["motion_every_n_steps"], child(path, "motion_every_n_steps"), 1);
         if (value.contains("obj_every_n_steps"))
             o.objEveryNSteps = integer(value["obj_every_n_steps"], child(path, "obj_every_n_steps"), 0);
         if (value.contains("png_every_n_steps"))
@@ -248,14 +252,19 @@ private:
             const Json& list = value["outputs"];
             const std::string lpath = child(path, "outputs");
             if (!list.is_array())
-                fail(lpath, "expected an array of \"obj\", \"vdb\", \"csv\", \"png\", got " + shown(list));
+                fail(lpath,
+                     "expected an array of \"motion\", \"gltf\", \"obj\", \"vdb\", \"csv\", \"png\", got " +
+                         shown(list));
             SceneOutputFormats f;
-            f.obj = false;
+            f.motion = false;
+            f.gltf = false;
             std::set<size_t> seen;
             for (size_t i = 0; i < list.size(); ++i) {
-                const size_t k = choice(list[i], element(lpath, i), {"obj", "vdb", "csv", "png"});
+                const size_t k =
+                    choice(list[i], element(lpath, i), {"motion", "gltf", "obj", "vdb", "csv", "png"});
                 if (!seen.insert(k).second) fail(element(lpath, i), "listed twice: " + shown(list[i]));
-                (k == 0 ? f.obj : k == 1 ? f.vdb : k == 2 ? f.csv : f.png) = true;
+                bool* flags[] = {&f.motion, &f.gltf, &f.obj, &f.vdb, &f.csv, &f.png};
+                *flags[k] = true;
             }
             scene.effects.outputs = f;
         }

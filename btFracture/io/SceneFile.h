@@ -96,17 +96,20 @@ struct SceneBody {
 struct SceneOutputs {
     std::string
         directory;  // empty: the runner's choice (out/<scene name>); relative to the working directory
-    int objEveryNSteps = 10;  // one OBJ frame every n steps (and the first and last); 0 = none
-    int pngEveryNSteps = 10;  // one PNG frame every n steps (and the first and last); 0 = none
-    RenderSettings image;     // PNG frames
+    int motionEveryNSteps = 10;  // motion.csv rows and .glb keyframes every n steps (and the first and last)
+    int objEveryNSteps = 10;     // one OBJ frame every n steps (and the first and last); 0 = none
+    int pngEveryNSteps = 10;     // one PNG frame every n steps (and the first and last); 0 = none
+    RenderSettings image;        // PNG frames
 };
 
 // What a run produces (scene key effects.outputs).
 struct SceneOutputFormats {
-    bool obj = true;   // per-frame OBJ, one object per body
-    bool vdb = false;  // fractured level sets (needs fracture)
-    bool csv = false;  // statistics.csv (one row per fracture event) and the fragment-volume histogram
-    bool png = false;  // preview frames, contact sheet, histogram plot
+    bool motion = true;  // meshes/<body>.obj once (body frame, crack faces "interior") + motion.csv
+    bool gltf = true;    // scene.glb: the bodies' meshes and their motion as a glTF 2.0 animation
+    bool obj = false;    // per-frame OBJ, one object per body (world frame)
+    bool vdb = false;    // fractured level sets (needs fracture)
+    bool csv = false;    // statistics.csv (one row per fracture event) and the fragment-volume histogram
+    bool png = false;    // preview frames, contact sheet, charts
 };
 
 struct SceneEffects {

@@ -61,10 +61,10 @@ ScenePreview::ScenePreview(const SceneWorld& world, const RenderSettings& settin
         box.extend(Eigen::Vector3d::Constant(-1.0));
         box.extend(Eigen::Vector3d::Constant(1.0));
     }
-    const Eigen::Vector3d up = scene.world.gravity.norm() > 0.0
-                                   ? Eigen::Vector3d(-scene.world.gravity.normalized())
-                                   : Eigen::Vector3d::UnitY();
-    camera_ = Camera::framing(box, settings.view, up, settings.projection,
+    box_ = box;
+    up_ = scene.world.gravity.norm() > 0.0 ? Eigen::Vector3d(-scene.world.gravity.normalized())
+                                           : Eigen::Vector3d::UnitY();
+    camera_ = Camera::framing(box_, settings.view, up_, settings.projection,
                               static_cast<double>(settings.width) / settings.height);
 }
 
@@ -84,6 +84,16 @@ void ScenePreview::label(Image& image, const std::string& text) const {
 }
 
 Image ScenePreview::render(const SceneWorld& world) {
+    Eigen::AlignedBox3d box = box_;
+    for (size_t i = 0; i < world.bodies().size(); ++i)
+        if (world.bodies()[i].rigidBody->getInvMass() > 0)
+            for (const auto& v : world.worldSurface(i).vertices) box.extend(v);
+    if (box.min() != box_.min() || box.max() != box_.max()) {
+        box_ = box;
+        camera_ = Camera::framing(box_, settings_.view, up_, settings_.projection,
+                                  static_cast<double>(settings_.width) / settings_.height);
+        rasterizer_.reset();
+    }
     if (rasterizer_)
         rasterizer_->clear(background());
     else

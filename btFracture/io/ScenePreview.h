@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Zlib
 #pragma once
-// Preview frames of a SceneWorld for the runner's PNG output: a fixed camera framing the
-// bodies' start positions, one colour per body, the frame's time as a label.
+// Preview frames of a SceneWorld for the runner's PNG output: a camera that follows the bodies
+// that move, one colour per body, the frame's time as a label.
 #include <btFracture/io/Image.h>
 #include <btFracture/io/Rasterizer.h>
 #include <btFracture/io/RenderSettings.h>
@@ -18,11 +18,13 @@ class ScenePreview {
 public:
     // The camera looks from settings.view at the bounding box of the bodies that move, as they
     // are now (of the static ones but planes when nothing moves), with "up" against gravity (+y
-    // without gravity); it stays fixed for every frame so that frames compare. Each body gets a colour by its
-    // position in the scene: static bodies grey, the others from an 8-colour palette.
+    // without gravity). Each body gets a colour by its position in the scene: static bodies
+    // grey, the others from an 8-colour palette.
     ScenePreview(const SceneWorld& world, const RenderSettings& settings);
 
-    // The world as it is now (reuses one rasterizer's buffers from frame to frame).
+    // The world as it is now (reuses one rasterizer's buffers from frame to frame). The camera
+    // follows the action: its box grows to hold every dynamic body (fragments included) as it
+    // is now, and never shrinks, so the view widens smoothly as pieces fly apart.
     Image render(const SceneWorld& world);
     // Writes `text` (e.g. "t = 0.400 s") into the top-left corner, scaled with the image height.
     void label(Image& image, const std::string& text) const;
@@ -37,6 +39,8 @@ public:
 
 private:
     RenderSettings settings_;
+    Eigen::AlignedBox3d box_;  // what the camera frames
+    Eigen::Vector3d up_;
     Camera camera_;
     std::map<std::string, Rgb> colours_;  // original bodies by name
     std::optional<Rasterizer> rasterizer_;

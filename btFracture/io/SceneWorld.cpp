@@ -7,6 +7,8 @@
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
+#include <btFracture/geometry/ClosestPointTree.h>
+#include <btFracture/io/CrackFaces.h>
 #include <btFracture/io/MeshReader.h>
 
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
@@ -16,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace btfracture {
 namespace {
@@ -96,6 +99,15 @@ struct SceneWorld::Impl {
     std::vector<std::unique_ptr<btRigidBody>> ownedBodies;
     std::vector<std::unique_ptr<btRigidBody>> brokenBodies;  // parents that broke, deleted next frame
     std::vector<Body> bodies;
+    std::vector<Removal> removals;
+    // Where a breakable body came from: the unbroken original's surface, the map from the body's
+    // frame into the original's, and the crack-face tolerance (1.5 level-set voxels).
+    struct Lineage {
+        std::shared_ptr<const ClosestPointTree> original;
+        Eigen::Isometry3d originalFromBody = Eigen::Isometry3d::Identity();
+        double tolerance = 0.0;
+    };
+    std::map<const btRigidBody*, Lineage> lineage;
     // Kinematic bodies: start pose and constant velocities, so that poses come from the elapsed
     // time without accumulating rounding.
     struct Kinematic {
@@ -328,6 +340,26 @@ void SceneWorld::replaceBody(const btRigidBody& parent,
     const auto found =
         std::find_if(w.bodies.begin(), w.bodies.end(), [&](const Body& b) { return b.rigidBody == &parent; });
     if (found == w.bodies.end()) throw Error("SceneWorld::replaceBody: the broken body is not in the scene");
+    auto lineage = w.lineage.find(&parent);
+    if (lineage == w.lineage.end()) {
+        // An original scene body: its surface is the reference for all its fragments' faces.
+        Impl::Lineage root;
+        root.original = std::make_shared<const ClosestPointTree>(found->surface);
+        const btFractureRigidBody* breakable = btFractureRigidBody::upcast(&parent);
+        double voxel = breakable ? breakable->settings().voxelSize : 0.0;
+        if (!(voxel > 0.0)) {
+            Eigen::AlignedBox3d box;
+            for (const auto& v : found->surface.vertices) box.extend(v);
+            voxel = box.sizes().maxCoeff() / 128.0;  // FractureBodySettings::voxelSize's default
+        }
+        root.tolerance = 1.5 * voxel;
+        lineage = w.lineage.emplace(&parent, std::move(root)).first;
+    }
+    const Impl::Lineage parentLineage = lineage->second;
+    w.lineage.erase(lineage);
+    const Eigen::Isometry3d parentPose = fromBullet(parent.getWorldTransform());
+    w.removals.push_back(
+        {found->name, parent.getWorldTransform(), parent.getLinearVelocity(), parent.getAngularVelocity()});
     std::vector<Body> pieces;
     for (const auto& [fragment, name] : fragments) {
         Body piece;
@@ -336,6 +368,12 @@ void SceneWorld::replaceBody(const btRigidBody& parent,
         piece.surface = fragment->mesh();
         piece.surface.name = name;
         piece.volume = fragment->volume();
+        piece.parent = found->name;
+        Impl::Lineage own = parentLineage;
+        own.originalFromBody =
+            parentLineage.originalFromBody * parentPose.inverse() * fromBullet(fragment->getWorldTransform());
+        piece.crackFaces = crackFaces(piece.surface, own.originalFromBody, *own.original, own.tolerance);
+        w.lineage.emplace(fragment, std::move(own));
         pieces.push_back(std::move(piece));
     }
     const auto position = w.bodies.erase(found);
@@ -346,6 +384,10 @@ void SceneWorld::replaceBody(const btRigidBody& parent,
             w.ownedBodies.erase(owned);
             break;
         }
+}
+
+const std::vector<SceneWorld::Removal>& SceneWorld::removals() const {
+    return impl_->removals;
 }
 
 TriangleMesh SceneWorld::worldSurface(size_t index) const {

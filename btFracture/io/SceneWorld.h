@@ -85,10 +85,21 @@ public:
         TriangleMesh surface;              // body frame (centre of mass, principal axes)
         double volume = 0.0;               // [m^3]; 0 for planes
         bool plane = false;                // an infinite plane (its surface is a display square)
+        std::string parent;                // the body it broke off; empty for scene bodies
+        std::vector<bool> crackFaces;      // per surface triangle: made by a cut (io/CrackFaces.h)
     };
     const std::vector<Body>& bodies() const;
     // Body `index`'s surface at its current pose, in world coordinates.
     TriangleMesh worldSurface(size_t index) const;
+
+    // A body that broke and left the world, with its state at that moment.
+    struct Removal {
+        std::string name;
+        btTransform pose;
+        btVector3 linearVelocity, angularVelocity;
+    };
+    // Every removal so far, in order.
+    const std::vector<Removal>& removals() const;
 
     // Fracture (call from a FractureListener): `parent` left the world and `fragments` took its
     // place; their entries replace the parent's, in the given order, with the given output names

@@ -21,6 +21,7 @@
 #include <btFracture/io/FractureRecorder.h>
 #include <btFracture/io/FractureRecorderListener.h>
 #include <btFracture/io/FractureSceneWorldFactory.h>
+#include <btFracture/io/MotionRecorder.h>
 #include <btFracture/io/ObjWriter.h>
 #include <btFracture/io/PngFile.h>
 #include <btFracture/io/RunRecord.h>
@@ -34,7 +35,9 @@
 
 #include "RunnerVersion.h"  // generated: BTFRACTURE_VERSION, BTFRACTURE_SOURCE_REVISION
 
+#include <spawn.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -69,10 +72,10 @@ const char* kHelp =
     "  --fracturerb SCENE.bullet PARAMS.csv\n"
     "                 read a FractureRB scene instead: a Bullet world file and the per-object CSV\n"
     "                 of Hahn & Wojtan's FractureRB (';'-separated, '%' comments); time step 1/250 s,\n"
-    "                 1000 steps and outputs obj,csv,png unless overridden\n"
+    "                 1000 steps and outputs motion,gltf,csv,png unless overridden\n"
     "  --out DIR      output folder (default: the scene's outputs.directory, else out/<scene name>);\n"
-    "                 when the run starts writing, the files of an earlier run in it (frame_*.obj,\n"
-    "                 frame_*.png, statistics.csv, run.json, ...) are removed\n"
+    "                 when the run starts writing, the files of an earlier run in it (motion.csv,\n"
+    "                 meshes/*.obj, scene.glb, frame_*.obj, frame_*.png, run.json, ...) are removed\n"
     "  --check        validate the scene and its meshes (everything a run checks before it\n"
     "                 simulates), print what was checked and exit: 0 valid, 2 not; writes and\n"
     "                 deletes nothing\n"
@@ -84,7 +87,8 @@ const char* kHelp =
     "                 default: the scene's effects.seed (0). Same seed, same results.\n"
     "  --threads T    worker threads for OpenMP and TBB (0 = all cores, the default); results do\n"
     "                 not depend on it\n"
-    "  --outputs L    comma-separated subset of obj,vdb,csv,png, or none; replaces effects.outputs\n"
+    "  --outputs L    comma-separated subset of motion,gltf,obj,vdb,csv,png, or none; replaces\n"
+    "                 effects.outputs (default motion,gltf)\n"
     "  --quiet        print only warnings and errors: no progress, no summary\n"
     "  --verbose      also print the debug log (every crack step: front nodes, K/K_c, arrests)\n"
     "  --version      print the version and the source revision it was built from\n"
@@ -94,7 +98,10 @@ const char* kHelp =
     "(steps, fracture events, fragments, rigid-body and fracture time, peak memory, outputs) goes\n"
     "to stdout.\n"
     "\n"
-    "Outputs in DIR: frame_NNNNN.obj (one object per body, every outputs.obj_every_n_steps),\n"
+    "Outputs in DIR: meshes/<body>.obj (each body's mesh once, in its body frame, crack faces under\n"
+    "usemtl interior) and motion.csv (pose, velocities and alive flag of every body, every\n"
+    "outputs.motion_every_n_steps), scene.glb (the same as a glTF 2.0 animation),\n"
+    "frame_NNNNN.obj (one object per body in world coordinates, every outputs.obj_every_n_steps),\n"
     "frame_NNNNN.png and contact_sheet.png (every outputs.png_every_n_steps), statistics.csv (one\n"
     "row per fracture event), fragments.csv and fragment_volumes.csv/.png (fragment volumes\n"
     "against Mott's distribution; written when something broke), levelset_<body>_NNN.vdb (the body's\n"
@@ -139,26 +146,27 @@ long long integerOption(const std::string& option, const std::string& text, long
 }
 
 SceneOutputFormats outputList(const std::string& text) {
+    const std::string expected =
+        "--outputs: expected a comma-separated subset of motion,gltf,obj,vdb,csv,png or none, got '";
     SceneOutputFormats f;
-    f.obj = false;
+    f.motion = f.gltf = false;
     if (text == "none") return f;
     std::istringstream items(text);
     std::string item;
     int count = 0;
     while (std::getline(items, item, ',')) {
-        bool* flag = item == "obj"   ? &f.obj
-                     : item == "vdb" ? &f.vdb
-                     : item == "csv" ? &f.csv
-                     : item == "png" ? &f.png
-                                     : nullptr;
-        if (!flag)
-            throw Error("--outputs: expected a comma-separated subset of obj,vdb,csv,png or none, got '" +
-                        text + "'");
+        bool* flag = item == "motion" ? &f.motion
+                     : item == "gltf" ? &f.gltf
+                     : item == "obj"  ? &f.obj
+                     : item == "vdb"  ? &f.vdb
+                     : item == "csv"  ? &f.csv
+                     : item == "png"  ? &f.png
+                                      : nullptr;
+        if (!flag) throw Error(expected + text + "'");
         *flag = true;
         ++count;
     }
-    if (count == 0)
-        throw Error("--outputs: expected a comma-separated subset of obj,vdb,csv,png or none, got ''");
+    if (count == 0) throw Error(expected + "'");
     return f;
 }
 
@@ -230,8 +238,8 @@ bool isRunOutput(const fs::path& file) {
     const std::string name = file.filename().string(), ext = file.extension().string();
     if (name.rfind("frame_", 0) == 0 && (ext == ".obj" || ext == ".png")) return true;
     if (name.rfind("levelset_", 0) == 0 && ext == ".vdb") return true;
-    for (const char* own : {"contact_sheet.png", "statistics.csv", "fragments.csv", "fragment_volumes.csv",
-                            "fragment_volumes.png", "run.json", "run.json.tmp"})
+    for (const char* own : {"motion.csv", "scene.glb", "contact_sheet.png", "statistics.csv", "fragments.csv",
+                            "fragment_volumes.csv", "fragment_volumes.png", "run.json", "run.json.tmp"})
         if (name == own) return true;
     return false;
 }
@@ -249,6 +257,14 @@ fs::path prepareOutput(const std::string& directory) {
             fs::remove(entry.path());
             ++removed;
         }
+    // meshes/: the body meshes and their material library
+    if (fs::is_directory(dir / "meshes"))
+        for (const auto& entry : fs::directory_iterator(dir / "meshes"))
+            if (entry.is_regular_file() &&
+                (entry.path().extension() == ".obj" || entry.path().filename() == "materials.mtl")) {
+                fs::remove(entry.path());
+                ++removed;
+            }
     if (removed > 0) logf(LogLevel::Info, "removed ", removed, " files of an earlier run from ", directory);
     return dir;
 }
@@ -275,6 +291,31 @@ std::string frameName(int index, const char* extension) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%05d.%s", index, extension);
     return name;
+}
+
+// Runs scripts/charts/<script> with the chart Python (cmake/ChartPython.cmake) on `arguments`;
+// false, with a note in the log, when there is no such Python or the script failed.
+bool drawChart(const char* script, const std::vector<std::string>& arguments) {
+    const std::string python = BTFRACTURE_CHART_PYTHON;
+    const std::string path = std::string(BTFRACTURE_CHART_SCRIPTS) + "/" + script;
+    if (python.empty() || !fs::exists(path)) {
+        logf(LogLevel::Info, "btfracture-run: no ", script,
+             " chart: it needs Python 3 with matplotlib (python3-matplotlib) and ", path);
+        return false;
+    }
+    std::vector<std::string> words{python, path};
+    words.insert(words.end(), arguments.begin(), arguments.end());
+    std::vector<char*> argv;
+    for (std::string& word : words) argv.push_back(word.data());
+    argv.push_back(nullptr);
+    pid_t child = 0;
+    int status = 0;
+    if (posix_spawnp(&child, argv[0], nullptr, nullptr, argv.data(), environ) != 0 ||
+        waitpid(child, &status, 0) != child || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        logf(LogLevel::Warning, "btfracture-run: ", path, " failed; no chart");
+        return false;
+    }
+    return true;
 }
 
 double peakMemoryMegabytes() {
@@ -430,6 +471,10 @@ int simulate(const Options& options, const Setup& setup, SceneWorld& world, cons
         logf(LogLevel::Warning, "btfracture-run: vdb output needs breakable bodies; none in this scene");
 
     const int steps = scene.world.steps;
+    const int motionEvery = formats.motion || formats.gltf ? scene.outputs.motionEveryNSteps : 0;
+    std::optional<MotionRecorder> motion;
+    if (motionEvery > 0)
+        motion.emplace(dir.string(), formats.motion, formats.gltf ? (dir / "scene.glb").string() : "");
     const int objEvery = formats.obj ? scene.outputs.objEveryNSteps : 0;
     const int pngEvery = formats.png ? scene.outputs.pngEveryNSteps : 0;
     std::optional<ScenePreview> preview;
@@ -445,7 +490,7 @@ int simulate(const Options& options, const Setup& setup, SceneWorld& world, cons
     std::vector<std::string> thumbnailLabels;
 
     const double setupSeconds = total.seconds();
-    double stepSeconds = 0.0, objSeconds = 0.0, renderSeconds = 0.0, pngSeconds = 0.0;
+    double stepSeconds = 0.0, motionSeconds = 0.0, objSeconds = 0.0, renderSeconds = 0.0, pngSeconds = 0.0;
     int objFrames = 0, pngFrames = 0, stepsTaken = 0;
     // The record's counters and times, as they stand (after every step, and at the end).
     const auto tally = [&] {
@@ -454,9 +499,14 @@ int simulate(const Options& options, const Setup& setup, SceneWorld& world, cons
         record.bodies = static_cast<int>(world.bodies().size());
         record.fractureEvents = recorder.events();
         record.seconds = {setupSeconds, stepSeconds - fractureSeconds, fractureSeconds,
-                          objSeconds + renderSeconds + pngSeconds, total.seconds()};
+                          motionSeconds + objSeconds + renderSeconds + pngSeconds, total.seconds()};
     };
     auto output = [&](int step) {
+        if (isOutputStep(step, motionEvery, steps)) {
+            Timer timer;
+            motion->sample(world);
+            motionSeconds += timer.seconds();
+        }
         if (isOutputStep(step, objEvery, steps)) {
             Timer timer;
             ObjWriter writer((dir / frameName(objFrames++, "obj")).string());
@@ -511,14 +561,28 @@ int simulate(const Options& options, const Setup& setup, SceneWorld& world, cons
                  contactSheet(thumbnails, thumbnailLabels, 4, thumbnailWidth));
     if (fractureWorld) fractureWorld->finishEnergyAudits();
     recorder.close();
+    if (motion) {
+        Timer timer;
+        motion->close();
+        motionSeconds += timer.seconds();
+    }
     const bool histogram =
-        formats.csv && recorder.writeFragmentVolumes((dir / "fragment_volumes").string(),
-                                                     (dir / "fragments.csv").string(), formats.png);
+        formats.csv && recorder.writeFragmentVolumes((dir / "fragment_volumes.csv").string(),
+                                                     (dir / "fragments.csv").string());
+    const bool chart = histogram && formats.png &&
+                       drawChart("fragment_volumes.py",
+                                 {(dir / "fragments.csv").string(), (dir / "fragment_volumes.csv").string(),
+                                  (dir / "fragment_volumes.png").string()});
     pngSeconds += finishing.seconds();
     record.fragments = static_cast<int>(recorder.fragments().size());
     tally();
 
     std::vector<std::string>& written = record.outputs;
+    if (motion && formats.motion)
+        written.push_back(std::to_string(motion->bodies()) + " body meshes meshes/<body>.obj, motion.csv (" +
+                          std::to_string(motion->samples()) + " samples, every " +
+                          std::to_string(motionEvery) + " steps)");
+    if (motion && formats.gltf) written.push_back("scene.glb");
     if (objFrames > 0)
         written.push_back(
             std::to_string(objFrames) + (objFrames == 1 ? " OBJ frame (every " : " OBJ frames (every ") +
@@ -530,7 +594,7 @@ int simulate(const Options& options, const Setup& setup, SceneWorld& world, cons
     if (!thumbnails.empty()) written.push_back("contact_sheet.png");
     if (formats.csv) written.push_back("statistics.csv");
     if (histogram) written.insert(written.end(), {"fragments.csv", "fragment_volumes.csv"});
-    if (histogram && formats.png) written.push_back("fragment_volumes.png");
+    if (chart) written.push_back("fragment_volumes.png");
     if (levelSetFiles > 0)
         written.push_back(std::to_string(levelSetFiles) + " fractured level set" +
                           (levelSetFiles == 1 ? "" : "s") + " levelset_<body>_NNN.vdb");
@@ -553,12 +617,12 @@ int simulate(const Options& options, const Setup& setup, SceneWorld& world, cons
         summary.add("rigid-body time", format("%.2f s (%.3f ms per step)", t.rigidBody,
                                               stepsTaken > 0 ? 1e3 * t.rigidBody / stepsTaken : 0.0));
         summary.add("fracture time", format("%.2f s", t.fracture));
-        summary.add(
-            "output time",
-            format("%.2f s (OBJ %.2f s, PNG %.2f s", t.output, objSeconds, renderSeconds + pngSeconds) +
-                (pngFrames > 0 ? format("; %.1f ms render + %.1f ms encode per frame)",
-                                        1e3 * renderSeconds / pngFrames, 1e3 * pngSeconds / pngFrames)
-                               : std::string(")")));
+        summary.add("output time",
+                    format("%.2f s (motion %.2f s, OBJ %.2f s", t.output, motionSeconds, objSeconds) +
+                        format(", PNG %.2f s", renderSeconds + pngSeconds) +
+                        (pngFrames > 0 ? format("; %.1f ms render + %.1f ms encode per frame)",
+                                                1e3 * renderSeconds / pngFrames, 1e3 * pngSeconds / pngFrames)
+                                       : std::string(")")));
         summary.add("setup time", format("%.2f s", t.setup));
         summary.add("wall time", format("%.2f s", total.seconds()));
         summary.add("peak memory", format("%.1f MB (max resident set size)", peakMemoryMegabytes()));

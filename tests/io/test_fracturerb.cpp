@@ -60,7 +60,9 @@ TEST(FractureRb, ExampleMatchesItsGenerator) {
     EXPECT_NEAR((scene.world.gravity - Eigen::Vector3d(0, -9.81, 0)).norm(), 0.0, 1e-6);
     EXPECT_DOUBLE_EQ(scene.world.dt, 1.0 / 250.0);
     EXPECT_EQ(scene.world.steps, 1000);
-    EXPECT_TRUE(scene.effects.outputs.obj && scene.effects.outputs.csv && scene.effects.outputs.png);
+    EXPECT_TRUE(scene.effects.outputs.motion && scene.effects.outputs.gltf && scene.effects.outputs.csv &&
+                scene.effects.outputs.png);
+    EXPECT_FALSE(scene.effects.outputs.obj);
 
     const SceneBody& ground = bodyNamed(scene, "pGround");  // no CSV row: the file's name
     EXPECT_EQ(ground.shape.type, SceneShapeType::Box);

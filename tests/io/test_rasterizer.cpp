@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Zlib
 // The preview renderer: silhouettes against analytic projected areas, depth order, lighting,
-// determinism, PNG round trips and contact sheets.
+// determinism, PNG round trips, contact sheets, and the preview camera following the action.
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/io/BitmapFont.h>
@@ -9,6 +9,9 @@
 #include <btFracture/io/MeshReader.h>
 #include <btFracture/io/PngFile.h>
 #include <btFracture/io/Rasterizer.h>
+#include <btFracture/io/SceneFile.h>
+#include <btFracture/io/ScenePreview.h>
+#include <btFracture/io/SceneWorld.h>
 
 #include <gtest/gtest.h>
 
@@ -264,4 +267,29 @@ TEST(ContactSheet, SelectionAndLayout) {
     EXPECT_THROW(contactSheet({}, {}, 3, 40), Error);
     frames.emplace_back(10, 10);
     EXPECT_THROW(contactSheet(frames, {}, 3, 40), Error);
+}
+
+TEST(ScenePreview, CameraFollowsABodyThatLeavesTheStartFrame) {
+    // No gravity: a static box at the origin and a box flying off along x at 10 m/s.
+    RenderSettings settings;
+    settings.width = 160;
+    settings.height = 120;
+    settings.supersampling = 1;
+    SceneWorld world(parseScene(R"({"world": {"dt": 0.01, "gravity": [0, 0, 0]},
+        "bodies": [{"name": "post", "shape": {"type": "box", "half_extents": [0.5, 0.5, 0.5]}, "mass": 0},
+                   {"name": "flyer", "shape": {"type": "box", "half_extents": [0.5, 0.5, 0.5]},
+                    "position": [2, 0, 0], "linear_velocity": [10, 0, 0]}]})",
+                                "test.json", "."));
+    ScenePreview preview(world, settings);
+    const auto flyerPixels = [&](const Image& image) {  // orange, lit or in shade; the rest is grey
+        int n = 0;
+        for (const Rgb& p : image.pixels()) n += p.r > p.b + 60 ? 1 : 0;
+        return n;
+    };
+    EXPECT_GT(flyerPixels(preview.render(world)), 100);
+    const Camera start = preview.camera();
+    for (int frame = 0; frame < 200; ++frame) world.stepFrame();  // 20 m further
+    // A camera that stayed at the start frame sees nothing of the flyer now; this one follows.
+    EXPECT_GT(flyerPixels(preview.render(world)), 10);
+    EXPECT_NE(preview.camera().eye, start.eye);
 }

@@ -46,6 +46,7 @@ TEST(SceneFile, DefaultsAndValues) {
     EXPECT_EQ(s.world.steps, 240);
     EXPECT_EQ(s.world.substeps, 1);
     EXPECT_EQ(s.outputs.objEveryNSteps, 10);
+    EXPECT_EQ(s.outputs.motionEveryNSteps, 10);
     ASSERT_EQ(s.bodies.size(), 2u);
     EXPECT_TRUE(s.bodies[0].isStatic());
     EXPECT_EQ(s.bodies[0].material.name(), "steel");  // the default material
@@ -66,9 +67,10 @@ TEST(SceneFile, DefaultsAndValues) {
     EXPECT_EQ(rock.fracture.bemTriangleTarget, 1000);
     EXPECT_EQ(rock.fracture.collisionTriangleTarget, 5000);
     EXPECT_EQ(rock.fracture.voxelSize, 0.0);
-    // Without an effects section a run writes OBJ frames only.
-    EXPECT_TRUE(s.effects.outputs.obj);
-    EXPECT_FALSE(s.effects.outputs.csv || s.effects.outputs.png || s.effects.outputs.vdb);
+    // Without an effects section a run writes the meshes once, motion.csv and scene.glb.
+    EXPECT_TRUE(s.effects.outputs.motion && s.effects.outputs.gltf);
+    EXPECT_FALSE(s.effects.outputs.obj || s.effects.outputs.csv || s.effects.outputs.png ||
+                 s.effects.outputs.vdb);
     EXPECT_EQ(s.effects.seed, 0u);
     EXPECT_TRUE(s.effects.voxelFronts);  // the marker cut
     EXPECT_EQ(s.outputs.pngEveryNSteps, 10);
@@ -114,7 +116,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_FALSE(s.bodies[3].isStatic());
     EXPECT_FALSE(s.bodies[3].fracture.fracturable);
     EXPECT_TRUE(s.effects.outputs.obj && s.effects.outputs.csv && s.effects.outputs.png);
-    EXPECT_FALSE(s.effects.outputs.vdb);
+    EXPECT_FALSE(s.effects.outputs.vdb || s.effects.outputs.motion || s.effects.outputs.gltf);
     EXPECT_EQ(s.effects.seed, 42u);
     EXPECT_FALSE(s.effects.voxelFronts);
     EXPECT_EQ(s.outputs.pngEveryNSteps, 5);
@@ -142,7 +144,7 @@ TEST(SceneFile, BadEffectsNameTheirPath) {
         {"name": "ball", "shape": {"type": "sphere", "radius": 1}}])";
     const std::pair<std::string, std::string> cases[] = {
         {R"("effects": {"outputs": ["obj", "gif"]})",
-         R"(test.json: effects.outputs[1]: expected "obj", "vdb", "csv" or "png", got "gif")"},
+         R"(test.json: effects.outputs[1]: expected "motion", "gltf", "obj", "vdb", "csv" or "png", got "gif")"},
         {R"("effects": {"outputs": ["png", "png"]})",
          R"(test.json: effects.outputs[1]: listed twice: "png")"},
         {R"("effects": {"outputs": "png"})", "test.json: effects.outputs: expected an array of"},

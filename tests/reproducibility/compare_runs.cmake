@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Zlib
 # Runs btfracture-run twice on one scene and requires byte-identical results: statistics.csv
-# without its wall-clock columns, fragments.csv and every OBJ frame. The first run must break
-# something, so that the comparison covers fracture and not just rigid-body motion.
+# without its wall-clock columns, fragments.csv, motion.csv, every body mesh and scene.glb. The
+# first run must break something, so that the comparison covers fracture and not just rigid-body
+# motion.
 #   RUNNER  the runner executable        SCENE  scene file        OUT  scratch folder
 #   ARGS    common arguments, separated by '|'
 #   ARGS_A / ARGS_B   arguments of run A / run B only, separated by '|' (optional)
@@ -59,11 +60,14 @@ if(NOT stats_a STREQUAL stats_b)
   message(FATAL_ERROR "statistics.csv differs between the runs:\nA: ${stats_a}\nB: ${stats_b}")
 endif()
 
-file(GLOB frames RELATIVE "${OUT}/a" "${OUT}/a/frame_*.obj" "${OUT}/a/fragments.csv")
+file(GLOB frames RELATIVE "${OUT}/a" "${OUT}/a/meshes/*.obj" "${OUT}/a/motion.csv" "${OUT}/a/scene.glb"
+     "${OUT}/a/fragments.csv")
 list(LENGTH frames frame_count)
-if(frame_count EQUAL 0)
-  message(FATAL_ERROR "run a wrote no OBJ frames")
-endif()
+foreach(required motion.csv scene.glb fragments.csv)
+  if(NOT EXISTS "${OUT}/a/${required}")
+    message(FATAL_ERROR "run a wrote no ${required}")
+  endif()
+endforeach()
 foreach(frame IN LISTS frames)
   execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${OUT}/a/${frame}" "${OUT}/b/${frame}"
                   RESULT_VARIABLE differ)
