@@ -1,9 +1,17 @@
 // SPDX-License-Identifier: Zlib
-// FULL stress intensity factors against closed-form and handbook solutions: one line per case
-// with its mesh size and K_I, then `METRIC <case> <relative error> ratio`. A case is a name and a
-// function returning the relative error; add one to `cases` below.
+// FULL stress intensity factors (Eq. 4 and the displacement correlation) against closed-form and
+// handbook solutions: one line per case with its mesh size and K_I, then
+// `METRIC <case> <relative error> ratio`. A case is a name and a function returning the relative
+// error; add one to `cases` below. Penny crack of radius a in a cube of side 8 a under tension
+// normal to it (Kassir & Sih): per ring count, the mean and worst-node K_I error and the largest
+// change of a node's K_I when the disc pattern is turned by 30 degrees (same polar angle).
+#include <btFracture/bem/CrackSystem.h>
+#include <btFracture/bem/ElasticSolver.h>
+#include <btFracture/fracture/CrackSeed.h>
 #include <btFracture/fracture/ReferenceCracks.h>
+#include <btFracture/fracture/StressIntensity.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -31,6 +39,62 @@ struct Case {
     std::function<double()> error;
 };
 
+struct FrontKI {
+    std::vector<double> angle, KI;  // sorted by polar angle
+};
+
+FrontKI pennyKI(const ElasticSolver& solver, const Material& material, double a, int rings, double rotation) {
+    CrackMesh cracks;
+    CrackSystem system(solver, cracks);
+    addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), a, rings, rotation);
+    system.update();
+    Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
+    sigma(2, 2) = 1e6;
+    const CrackSystem::Solution sol = system.solve(uniformStressTractions(solver.mesh(), sigma));
+    auto sifs = displacementCorrelation(system.cracks(), system.nodalOpenings(sol), material);
+    for (auto& f : sifs) f.spacing = std::atan2(f.position.y(), f.position.x());  // reuse as angle
+    std::sort(sifs.begin(), sifs.end(), [](const FrontSifs& x, const FrontSifs& y) { return x.spacing < y.spacing; });
+    FrontKI out;
+    for (const auto& f : sifs) out.angle.push_back(f.spacing), out.KI.push_back(f.KI);
+    return out;
+}
+
+// K_I of `f` at polar angle w, linear between neighbouring nodes (periodic).
+double interpolate(const FrontKI& f, double w) {
+    const int n = static_cast<int>(f.angle.size());
+    for (int i = 0; i < n; ++i) {
+        const int j = (i + 1) % n;
+        double w0 = f.angle[i], w1 = f.angle[j], x = w;
+        if (j == 0) w1 += 2 * M_PI;
+        if (x < w0) x += 2 * M_PI;
+        if (x >= w0 && x <= w1) return f.KI[i] + (f.KI[j] - f.KI[i]) * (x - w0) / (w1 - w0);
+    }
+    return f.KI[0];
+}
+
+// Worst-node K_I error of the penny crack at 8 rings; prints the 4 / 6 / 8-ring table.
+double pennyWorstNodeError() {
+    const double a = 0.05;
+    const ElasticSolver solver(SurfaceMesh(pennyCrackCube(a)), kMaterial);
+    const double exact = pennyCrackSifs(1e6, a, M_PI / 2, kMaterial.poissonRatio()).KI;
+    double worst8 = 0.0;
+    for (int rings : {4, 6, 8}) {
+        const FrontKI straight = pennyKI(solver, kMaterial, a, rings, 0.0);
+        const FrontKI turned = pennyKI(solver, kMaterial, a, rings, M_PI / 6);
+        double mean = 0.0, worst = 0.0, turn = 0.0;
+        for (double K : straight.KI) {
+            mean += K / exact / straight.KI.size();
+            worst = std::max(worst, std::abs(K / exact - 1.0));
+        }
+        for (std::size_t i = 0; i < turned.KI.size(); ++i)
+            turn = std::max(turn, std::abs(turned.KI[i] / interpolate(straight, turned.angle[i]) - 1.0));
+        std::printf("penny %d rings: %zu front nodes, K_I mean %+.2f %%, worst node %.2f %%, 30-degree turn %.2f %%\n",
+                    rings, straight.KI.size(), 100 * (mean - 1.0), 100 * worst, 100 * turn);
+        if (rings == 8) worst8 = worst;
+    }
+    return worst8;
+}
+
 }  // namespace
 
 int main() {
@@ -38,6 +102,7 @@ int main() {
         {"edge_crack_error_0p2", [] { return surfaceCrackError(edgeCrackCase(0.2, kEdgeCrackElements)); }},
         {"edge_crack_error_0p4", [] { return surfaceCrackError(edgeCrackCase(0.4, kEdgeCrackElements)); }},
         {"senb_error", [] { return surfaceCrackError(notchedBeamCase(kNotchedBeamElements)); }},
+        {"penny_worst_node_error_8rings", pennyWorstNodeError},
     };
     for (const Case& c : cases) {
         const double e = c.error();

@@ -2,6 +2,7 @@
 #include <btFracture/bem/SurfaceMesh.h>
 
 #include <btFracture/core/ClosestPoint.h>
+#include <btFracture/core/Error.h>
 #include <btFracture/core/Intersection.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
@@ -15,7 +16,15 @@
 namespace btfracture {
 
 SurfaceMesh::SurfaceMesh(TriangleMesh mesh) {
-    requireClosedSolid(mesh);
+    const MeshDefects defects = requireClosedSolid(mesh);
+    // Each closed surface adds six rigid motions to the null space of the hypersingular
+    // operator (its double layer vanishes outside it), the regulariser of Eq. 1-2 removes six.
+    if (defects.components > 1)
+        throw Error((mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name) + ": bounded by " +
+                    std::to_string(defects.components) +
+                    " separate closed surfaces (a cavity, or several solids in one mesh); the BEM "
+                    "solver supports solids bounded by one closed surface: give separate solids as "
+                    "separate bodies, cavities are not supported");
     const MassProperties mass = computeMassProperties(mesh);
     offset_ = mass.centreOfMass;
     volume_ = mass.volume;

@@ -151,7 +151,7 @@ MeshDefects inspectMesh(const TriangleMesh& mesh) {
     return d;
 }
 
-void requireClosedSolid(TriangleMesh& mesh) {
+MeshDefects requireClosedSolid(TriangleMesh& mesh) {
     const std::string source = mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name;
     if (mesh.triangles.empty()) throw Error(source + ": mesh has no triangles");
     const MeshDefects d = inspectMesh(mesh);
@@ -164,6 +164,7 @@ void requireClosedSolid(TriangleMesh& mesh) {
         logf(LogLevel::Warning, source, ": mesh was inside-out (signed volume ", d.signedVolume,
              "); flipped all ", mesh.triangles.size(), " triangles to face outward");
     }
+    return d;
 }
 
 }  // namespace btfracture

@@ -35,7 +35,8 @@ MeshDefects inspectMesh(const TriangleMesh& mesh);
 
 // Throws btfracture::Error naming `mesh.name` and every defect count when the mesh is empty,
 // open, non-manifold, inconsistently oriented, degenerate, non-finite or self-intersecting. A mesh
-// that is merely inside-out is flipped in place with a warning.
-void requireClosedSolid(TriangleMesh& mesh);
+// that is merely inside-out is flipped in place with a warning. Returns the defect counts (all
+// zero but `components` and `signedVolume`).
+MeshDefects requireClosedSolid(TriangleMesh& mesh);
 
 }  // namespace btfracture

@@ -35,6 +35,7 @@ void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
     triangleInBody_.clear();
     arrested_.resize(cracks_.nodeCount(), 0);
     tractions_ = q;
+    peakStress_ = -1.0;
     load_ = solver_.operators().tractionToLoad * q;
     solver_.netLoad(q);  // validates size
     if (settings_.method == FractureMethod::Hybrid && active_ == FractureMethod::Full &&
@@ -98,6 +99,10 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
     std::optional<StressEvaluator> crackFree;  // only the gain limit reads the crack-free stress
     if (limit > 0.0)
         crackFree.emplace(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), crackFree_, tractions_);
+    if (peakStress_ < 0.0)
+        peakStress_ = peakStress(
+            surfaceStresses(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), crackFree_, tractions_));
+    stressBounded_ = 0;
     auto Keff = [&](const FrontSifs& s) { return effectiveK(s.KI, s.KII, s.KIII, m.poissonRatio()); };
     std::vector<FrontSifs> out;
     out.reserve(frames.size());
@@ -108,8 +113,11 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
         double area = 0.0;
         if (!cracks_.trianglesAtNode(f.node).empty())
             area = sheetAreas[cracks_.sheetOf(cracks_.trianglesAtNode(f.node)[0])];
-        FrontSifs e = estimateSifs(f.frame, stress.stressAt(f.position), area, m.compressiveFactor(),
-                                   settings_.estimatorGeometryFactor);
+        Eigen::Matrix3d local = stress.stressAt(f.position);
+        if (boundStress(local, kMaxGeometryFactor / settings_.estimatorGeometryFactor * peakStress_))
+            ++stressBounded_;
+        FrontSifs e =
+            estimateSifs(f.frame, local, area, m.compressiveFactor(), settings_.estimatorGeometryFactor);
         if (limit > 0.0) {  // the §4.3 update raises K_eff at most `limit` times (FractureSettings)
             const double K = Keff(e),
                          bound = limit *
@@ -159,6 +167,12 @@ FractureStepRecord FractureSolver::step(int index) {
     record.sifSeconds = timer.seconds();
     record.frontNodes = static_cast<int>(sifs.size());
     record.gainLimitedNodes = active_ == FractureMethod::Estimated ? gainLimited_ : 0;
+    record.stressBoundedNodes = active_ == FractureMethod::Estimated ? stressBounded_ : 0;
+    if (record.stressBoundedNodes > 0)
+        logf(LogLevel::Info, "fracture: step ", index, ": the local stress at ", record.stressBoundedNodes,
+             " of ", record.frontNodes, " fronts exceeded ", kMaxGeometryFactor / settings_.estimatorGeometryFactor,
+             " times the crack-free surface peak ", peakStress_, " Pa (K <= ", kMaxGeometryFactor,
+             " sigma_peak sqrt(pi a)); EST used that bound there");
     if (record.gainLimitedNodes > 0)
         logf(LogLevel::Info, "fracture: step ", index, ": estimatorUpdateGainLimit ",
              settings_.estimatorUpdateGainLimit, " scaled down the SIFs of ", record.gainLimitedNodes, " of ",
@@ -272,7 +286,7 @@ void FractureSolver::switchToEstimator() {
         displacements_ = solver_.displacementsFromLoad(load_ - crackLoad_);
         estimatedOpenings_ = solvedOpenings_;
     }
-    if (gainLimit() > 0.0) crackFree_ = solver_.displacements(tractions_);
+    crackFree_ = solver_.displacements(tractions_);
     full_.reset();
     active_ = FractureMethod::Estimated;
     logf(LogLevel::Info, "fracture: HYBRID switched to the estimator at ", meshElements(), " BEM elements");

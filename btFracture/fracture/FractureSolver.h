@@ -30,6 +30,7 @@ struct FractureStepRecord {
     int crackTriangles = 0;     // after the step
     double maxLoadRatio = 0.0;  // max K_eff / K_c over the front before the step
     int gainLimitedNodes = 0;   // EST: fronts whose SIFs estimatorUpdateGainLimit scaled down
+    int stressBoundedNodes = 0;  // EST: fronts whose local stress boundStress scaled down
     double sifSeconds = 0.0, growthSeconds = 0.0;
 };
 
@@ -65,6 +66,8 @@ public:
     std::vector<FrontSifs> frontSifs(bool activeOnly = false);
     // EST: fronts the last frontSifs() call limited (FractureSettings::estimatorUpdateGainLimit).
     int gainLimitedNodes() const { return gainLimited_; }
+    // EST: fronts whose local stress the last frontSifs() call bounded (boundStress).
+    int stressBoundedNodes() const { return stressBounded_; }
     FractureStepRecord step(int index);  // one propagation step
 
     // What the high-resolution front (CrackFront.h) tells the coarse sheet after it moved: the
@@ -104,8 +107,11 @@ private:
     FractureMethod active_;
     double meanSize_ = 0.0;  // mean BEM triangle diameter h [m]
     Eigen::VectorXd tractions_, load_, crackLoad_, displacements_;
-    Eigen::VectorXd
-        crackFree_;  // EST: the event's crack-free displacements (no §4.3; read by the gain limit only)
+    // EST: the event's crack-free displacements (no §4.3), their peak surface stress (negative
+    // until computed), read by the gain limit and the stress bound.
+    Eigen::VectorXd crackFree_;
+    double peakStress_ = -1.0;
+    int stressBounded_ = 0;
     Eigen::VectorXd leavingOpenings_;  // FULL: per crack node, the §4.3 estimate of its opening
     int gainLimited_ = 0;
     Eigen::VectorXd estimatedOpenings_;  // EST: per crack node, 3 each

@@ -6,6 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 
 namespace btfracture {
@@ -71,6 +72,26 @@ FrontSifs estimateSifs(const FrontFrame& frame, const Eigen::Matrix3d& stress, d
     f.KIII = scale * frame.tangent.dot(stress * frame.normal);
     f.compressive = choice.compressive;
     return f;
+}
+
+namespace {
+double largestMagnitude(const Eigen::Matrix3d& stress) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(stress, Eigen::EigenvaluesOnly);
+    return eig.eigenvalues().cwiseAbs().maxCoeff();
+}
+}  // namespace
+
+bool boundStress(Eigen::Matrix3d& stress, double peak) {
+    const double magnitude = largestMagnitude(stress);
+    if (!(magnitude > peak)) return false;
+    stress *= peak / magnitude;
+    return true;
+}
+
+double peakStress(const std::vector<Eigen::Matrix3d>& stresses) {
+    double peak = 0.0;
+    for (const Eigen::Matrix3d& s : stresses) peak = std::max(peak, largestMagnitude(s));
+    return peak;
 }
 
 }  // namespace btfracture

@@ -10,6 +10,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace btfracture {
 
 struct EstimatorChoice {
@@ -29,5 +31,18 @@ EstimatorChoice chooseEigenvector(const FrontFrame& frame, const Eigen::Matrix3d
 // `crackArea` [m^2]. K_I is positive; a compressive choice is flagged in `compressive`.
 FrontSifs estimateSifs(const FrontFrame& frame, const Eigen::Matrix3d& stress, double crackArea,
                        double compressiveFactor, double geometryFactor);
+
+// What the load can produce: a crack of size a under stresses of at most sigma_peak has
+// K <= F sigma_peak sqrt(pi a) with a geometry factor F that no handbook geometry takes far
+// beyond kMaxGeometryFactor (the edge crack of Tada's formula reaches 6 at a / b = 0.7). EST's
+// K = k lambda (pi A)^(1/4) stays within that bound when lambda <= kMaxGeometryFactor / k times
+// the largest principal stress magnitude on the body's crack-free surface (where the stress of a
+// body loaded only on its surface peaks), `peak` [Pa]. boundStress scales a larger local stress
+// (the interior integral near the surface, or the §4.3 update piling up openings) down to
+// that, keeping its directions, and returns whether it did.
+constexpr double kMaxGeometryFactor = 6.0;
+bool boundStress(Eigen::Matrix3d& stress, double peak);
+// Largest principal stress magnitude over `stresses` (e.g. per surface triangle) [Pa].
+double peakStress(const std::vector<Eigen::Matrix3d>& stresses);
 
 }  // namespace btfracture

@@ -122,6 +122,32 @@ TEST(SifEstimator, AlignsTheCrackNormalWithThePrincipalDirection) {
     EXPECT_NEAR(std::abs(f.KIII), k * s * std::pow(M_PI * A, 0.25), 1e-6 * s);
 }
 
+TEST(SifEstimator, EstimatesStayWithinWhatTheLoadCanProduce) {
+    // A local stress 100 times the surface peak (as the interior integral gives right at the
+    // surface) is scaled to 6 / k times the peak, keeping its directions: K_eff then stays
+    // within 6 sigma_peak sqrt(pi a) (a = sqrt(A / pi)); a stress below the bound is untouched.
+    FrontFrame frame{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX().cross(Eigen::Vector3d::UnitZ())};
+    Eigen::Matrix3d surface = Eigen::Matrix3d::Zero();
+    surface(2, 2) = 2e6;
+    surface(0, 1) = surface(1, 0) = -1e6;
+    const double peak = peakStress({surface, 0.5 * surface});
+    EXPECT_NEAR(peak, 2e6, 1e-6);  // eigenvalues 2 MPa and +-1 MPa
+    const double k = 2.0 / M_PI, A = 1e-3, bound = kMaxGeometryFactor / k * peak;
+    Eigen::Matrix3d local = Eigen::Matrix3d::Zero();
+    local(2, 2) = 100 * peak;
+    local(0, 2) = local(2, 0) = 10 * peak;
+    const Eigen::Matrix3d before = local;
+    EXPECT_TRUE(boundStress(local, bound));
+    EXPECT_NEAR((local - before * (local(2, 2) / before(2, 2))).norm(), 0.0, 1e-9 * peak);
+    const FrontSifs f = estimateSifs(frame, local, A, 2.0, k);
+    const double Keff = effectiveK(f.KI, f.KII, f.KIII, 0.3), a = std::sqrt(A / M_PI);
+    EXPECT_LE(Keff, 1.0001 * kMaxGeometryFactor * peak * std::sqrt(M_PI * a));
+    EXPECT_GT(Keff, 0.5 * kMaxGeometryFactor * peak * std::sqrt(M_PI * a));
+    Eigen::Matrix3d small = 0.5 * before / 100.0;
+    EXPECT_FALSE(boundStress(small, bound));
+    EXPECT_EQ(small, 0.5 * before / 100.0);
+}
+
 TEST(SifEstimator, OpeningFromSifsInvertsTheCorrelationAndClosesUnderCompression) {
     // A hexagon (one ring): the centre is the only opening node, the same distance r behind every
     // front edge. Its opening from K_I (§4.3) must give K_I back through the correlation, with the
