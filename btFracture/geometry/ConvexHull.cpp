@@ -7,141 +7,53 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <vector>
 
 namespace btfracture {
 namespace {
 
-// ---- Exact orientation (expansion arithmetic: every value is a sum of non-overlapping doubles
-// in increasing magnitude; sums and products are exact as long as no product underflows).
-// Expansions live on the stack: the exact path runs for every (near-)coplanar point of a hull,
-// which cut faces and voxel-aligned level-set surfaces have by the thousand.
+// ---- Exact orientation on a grid. The points are snapped to a grid of power-of-two cells, at
+// most kGridCells per side of their bounding box, and carried as integers in [0, kGridCells]:
+// coordinate differences then take 41 bits, the cross terms 82 and the determinant below 124,
+// so 128-bit integers evaluate every orientation exactly, with no floating-point filter, in the
+// same way on every CPU.
 
-// The largest expansion side() builds: differences have <= 2 components, a product of m and n
-// components <= 1 + 2 m n (so <= 9 for two differences), a cross term <= 18, a difference times a
-// cross term <= 73, the determinant <= 219.
-constexpr int kMaxComponents = 224;
+constexpr std::int64_t kGridCells = std::int64_t{1} << 40;
 
-struct Expansion {
-    double c[kMaxComponents];
-    int n = 0;
-};
-
-void twoSum(double a, double b, double& sum, double& error) {
-    sum = a + b;
-    const double bVirtual = sum - a, aVirtual = sum - bVirtual;
-    error = (a - aVirtual) + (b - bVirtual);
-}
-
-void difference(double a, double b, Expansion& h) {
-    const double x = a - b;
-    const double bVirtual = a - x, aVirtual = x + bVirtual;
-    const double y = (a - aVirtual) + (bVirtual - b);
-    h.n = 0;
-    if (y != 0.0) h.c[h.n++] = y;
-    h.c[h.n++] = x;
-}
-
-// e += b, in place (each component is read before its slot or a later one is written).
-void grow(Expansion& e, double b) {
-    double q = b;
-    int n = 0;
-    for (int i = 0; i < e.n; ++i) {
-        double sum, error;
-        twoSum(q, e.c[i], sum, error);
-        q = sum;
-        if (error != 0.0) e.c[n++] = error;
-    }
-    if (q != 0.0 || n == 0) e.c[n++] = q;
-    e.n = n;
-}
-
-// e += f
-void add(Expansion& e, const Expansion& f) {
-    for (int i = 0; i < f.n; ++i) grow(e, f.c[i]);
-}
-
-// h = e * b
-void scale(const Expansion& e, double b, Expansion& h) {
-    h.n = 0;
-    double q = e.c[0] * b;
-    double error = std::fma(e.c[0], b, -q);
-    if (error != 0.0) h.c[h.n++] = error;
-    for (int i = 1; i < e.n; ++i) {
-        const double product = e.c[i] * b, productError = std::fma(e.c[i], b, -product);
-        double s;
-        twoSum(q, productError, s, error);
-        if (error != 0.0) h.c[h.n++] = error;
-        q = product + s;  // |product| >= |s|: exact with the error below
-        error = s - (q - product);
-        if (error != 0.0) h.c[h.n++] = error;
-    }
-    if (q != 0.0 || h.n == 0) h.c[h.n++] = q;
-}
-
-// total = e * f
-void product(const Expansion& e, const Expansion& f, Expansion& total) {
-    total.n = 1;
-    total.c[0] = 0.0;
-    Expansion scaled;
-    for (int i = 0; i < f.n; ++i) {
-        scale(e, f.c[i], scaled);
-        add(total, scaled);
-    }
-}
-
-void negate(Expansion& e) {
-    for (int i = 0; i < e.n; ++i) e.c[i] = -e.c[i];
-}
-
-int sign(const Expansion& e) {
-    for (int i = e.n - 1; i >= 0; --i)
-        if (e.c[i] != 0.0) return e.c[i] > 0.0 ? 1 : -1;
-    return 0;
-}
+using GridPoint = std::array<std::int64_t, 3>;
+using Wide = __int128;
 
 // Sign of (b - a) x (c - a) . (p - a): positive when p lies on the side the normal of the
-// counter-clockwise triangle abc points to. A floating-point filter first; exact when it cannot
-// decide.
-int side(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-         const Eigen::Vector3d& p) {
-    const Eigen::Vector3d u = b - a, v = c - a, w = p - a;
-    const double xy = v.y() * w.z() - v.z() * w.y(), yz = v.z() * w.x() - v.x() * w.z(),
-                 zx = v.x() * w.y() - v.y() * w.x();
-    const double det = u.x() * xy + u.y() * yz + u.z() * zx;
-    const double permanent = std::abs(u.x()) * (std::abs(v.y() * w.z()) + std::abs(v.z() * w.y())) +
-                             std::abs(u.y()) * (std::abs(v.z() * w.x()) + std::abs(v.x() * w.z())) +
-                             std::abs(u.z()) * (std::abs(v.x() * w.y()) + std::abs(v.y() * w.x()));
-    // Round-off of the differences, products and sums stays below 8 eps of the permanent.
-    const double bound = 8.0 * std::numeric_limits<double>::epsilon() * permanent;
-    if (det > bound) return 1;
-    if (det < -bound) return -1;
-    std::array<Expansion, 3> U, V, W;
-    for (int k = 0; k < 3; ++k) {
-        difference(b[k], a[k], U[k]);
-        difference(c[k], a[k], V[k]);
-        difference(p[k], a[k], W[k]);
+// counter-clockwise triangle abc points to.
+int side(const GridPoint& a, const GridPoint& b, const GridPoint& c, const GridPoint& p) {
+    const std::int64_t ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+    const std::int64_t vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+    const std::int64_t wx = p[0] - a[0], wy = p[1] - a[1], wz = p[2] - a[2];
+    const Wide xy = Wide{vy} * wz - Wide{vz} * wy, yz = Wide{vz} * wx - Wide{vx} * wz,
+               zx = Wide{vx} * wy - Wide{vy} * wx;
+    const Wide det = ux * xy + uy * yz + uz * zx;
+    return det > 0 ? 1 : (det < 0 ? -1 : 0);
+}
+
+// The points as grid coordinates: cell = the smallest power of two with kGridCells cells
+// covering the largest extent of the bounding box, origin at its low corner.
+std::vector<GridPoint> snapToGrid(const std::vector<Eigen::Vector3d>& points) {
+    Eigen::Vector3d lo = points.front(), hi = lo;
+    for (const auto& p : points) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
     }
-    Expansion exact, cross, term, negative;
-    exact.n = 0;
-    // cross(i, j) = V_i W_j - V_j W_i; exact = U_0 cross(1, 2) + U_1 cross(2, 0) + U_2 cross(0, 1)
-    const int pairs[3][2] = {{1, 2}, {2, 0}, {0, 1}};
-    for (int k = 0; k < 3; ++k) {
-        const int i = pairs[k][0], j = pairs[k][1];
-        product(V[i], W[j], cross);
-        product(V[j], W[i], negative);
-        negate(negative);
-        add(cross, negative);
-        product(U[k], cross, term);
-        if (k == 0)
-            exact = term;
-        else
-            add(exact, term);
-    }
-    return sign(exact);
+    const double extent = (hi - lo).maxCoeff();
+    int exponent = 0;  // cell = 2^exponent >= extent / kGridCells
+    if (extent > 0.0) std::frexp(extent / static_cast<double>(kGridCells), &exponent);
+    std::vector<GridPoint> grid(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+        for (int k = 0; k < 3; ++k)
+            grid[i][k] = std::llround(std::ldexp(points[i][k] - lo[k], -exponent));
+    return grid;
 }
 
 // ---- Quickhull over exact orientations.
@@ -157,9 +69,11 @@ struct Face {
 
 class Quickhull {
 public:
-    // `points` must outlive the object; `name` names it in errors.
-    Quickhull(const std::vector<Eigen::Vector3d>& points, const std::string& name)
-        : p_(points), name_(name) {}
+    // `points` and `grid` (the same points on the grid) must outlive the object; `name` names it
+    // in errors.
+    Quickhull(const std::vector<Eigen::Vector3d>& points, const std::vector<GridPoint>& grid,
+              const std::string& name)
+        : p_(points), g_(grid), name_(name) {}
 
     // The hull's faces; corners are indices into the points.
     void run() {
@@ -224,7 +138,7 @@ public:
     }
 
 private:
-    int sideOf(const Face& f, int point) const { return side(p_[f.v[0]], p_[f.v[1]], p_[f.v[2]], p_[point]); }
+    int sideOf(const Face& f, int point) const { return side(g_[f.v[0]], g_[f.v[1]], g_[f.v[2]], g_[point]); }
 
     [[noreturn]] void flat(const char* what) const {
         std::ostringstream out;
@@ -261,14 +175,14 @@ private:
         best = 0.0;
         for (int i = 0; i < n; ++i) {
             const double volume = std::abs((p_[i1] - p_[i0]).cross(p_[i2] - p_[i0]).dot(p_[i] - p_[i0]));
-            if (volume > best && side(p_[i0], p_[i1], p_[i2], p_[i]) != 0) {
+            if (volume > best && side(g_[i0], g_[i1], g_[i2], g_[i]) != 0) {
                 best = volume;
                 i3 = i;
             }
         }
         if (i3 < 0)
             for (int i = 0; i < n && i3 < 0; ++i)
-                if (side(p_[i0], p_[i1], p_[i2], p_[i]) != 0) i3 = i;
+                if (side(g_[i0], g_[i1], g_[i2], g_[i]) != 0) i3 = i;
         if (i3 < 0) flat("all points in a plane");
 
         const std::array<int, 4> corner = {i0, i1, i2, i3};
@@ -277,7 +191,7 @@ private:
         for (const auto& t : tetra) {
             Face f;
             f.v = {corner[t[0]], corner[t[1]], corner[t[2]]};
-            if (side(p_[f.v[0]], p_[f.v[1]], p_[f.v[2]], p_[corner[t[3]]]) > 0) std::swap(f.v[1], f.v[2]);
+            if (side(g_[f.v[0]], g_[f.v[1]], g_[f.v[2]], g_[corner[t[3]]]) > 0) std::swap(f.v[1], f.v[2]);
             faces_.push_back(f);
         }
         for (int f = 0; f < 4; ++f)
@@ -401,6 +315,7 @@ private:
     }
 
     const std::vector<Eigen::Vector3d>& p_;
+    const std::vector<GridPoint>& g_;
     std::string name_;
     std::vector<Face> faces_;
     int stamp_ = 0;
@@ -410,20 +325,26 @@ private:
 
 TriangleMesh convexHullMesh(const std::vector<Eigen::Vector3d>& points, const std::string& name) {
     for (const auto& p : points)
-        if (!p.allFinite()) throw Error(name + ": convex hull input has a non-finite point");
+        if (!p.allFinite() || p.cwiseAbs().maxCoeff() > 1e300)
+            throw Error(name + ": convex hull input has a non-finite point or one beyond 1e300");
     if (points.size() < 4) {
         std::ostringstream out;
         out << name << ": convex hull of " << points.size() << " points spans no volume (need >= 4)";
         throw Error(out.str());
     }
-    Quickhull hull(points, name);
+    const std::vector<GridPoint> grid = snapToGrid(points);
+    Quickhull hull(points, grid, name);
     hull.run();
     const std::vector<int> extreme = hull.extremeCorners();
     if (extreme.size() == hull.cornerCount()) return hull.mesh(name);
-    // Again over the extreme corners alone, so that every corner is one.
+    // Again over the extreme corners alone (on the same grid), so that every corner is one.
     std::vector<Eigen::Vector3d> corners;
-    for (const int i : extreme) corners.push_back(points[i]);
-    Quickhull lean(corners, name);
+    std::vector<GridPoint> cornerGrid;
+    for (const int i : extreme) {
+        corners.push_back(points[i]);
+        cornerGrid.push_back(grid[i]);
+    }
+    Quickhull lean(corners, cornerGrid, name);
     lean.run();
     return lean.mesh(name);
 }

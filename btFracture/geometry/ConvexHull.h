@@ -11,12 +11,15 @@
 
 namespace btfracture {
 
-// Outward-oriented closed triangle mesh of the convex hull of `points` (quickhull on exact
-// orientation tests, so any input gives a closed, convex mesh that contains every point); its
-// corners are the extreme points among `points`, exactly (points inside the hull, on a face or
-// on an edge are not corners). Deterministic: the same points in the same order give the same
-// mesh. Throws btfracture::Error naming `name` when the points are not finite or span no volume
-// (fewer than four affinely independent points).
+// Outward-oriented closed triangle mesh of the convex hull of `points`: quickhull on exact integer
+// orientation tests of the points snapped to a grid of power-of-two cells, 2^40 cells across the
+// largest side of their bounding box (cell <= 2^-40 of that side). The mesh's corners are input
+// points, exactly: those whose grid points are extreme on the grid's hull (grid points inside it,
+// on a face or on an edge are not corners). So the mesh is closed and convex, and contains every
+// point, up to the snapping (each point moves by at most half a cell per axis). Deterministic, on
+// every CPU: the same points in the same order give the same mesh. Throws btfracture::Error naming
+// `name` when a point is not finite or beyond 1e300, or the grid points span no volume (fewer
+// than four affinely independent ones).
 TriangleMesh convexHullMesh(const std::vector<Eigen::Vector3d>& points, const std::string& name);
 
 // True when every vertex lies on the inner side of every triangle's plane, within

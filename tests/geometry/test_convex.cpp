@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace btfracture {
@@ -93,10 +94,25 @@ TEST(ConvexHull, VoxelCornersOfAnEllipsoid) {
     EXPECT_EQ(convexHullMesh(points, "voxels").vertices, hull.vertices);  // deterministic
 }
 
+// Points within a grid cell (2^-40 of the box's largest side) of a face plane snap onto it: the
+// hull stays the box of the eight corners, and holds every point up to that cell.
+TEST(ConvexHull, PointsWithinAGridCellOfAFaceAreNotCorners) {
+    std::vector<Eigen::Vector3d> points = boxCorners({0.1, 0.2, 0.3});
+    const double cell = std::ldexp(0.6, -40);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int i = 0; i < 200; ++i) points.emplace_back(0.09 * u(rng), 0.19 * u(rng), 0.3 + 0.4 * cell * u(rng));
+    expectBoxHull(points, 0.2 * 0.4 * 0.6, 1e-12);
+    expectContains(convexHullMesh(points, "box"), points, cell);
+}
+
 TEST(ConvexHull, DegenerateInputIsRejected) {
     EXPECT_THROW(convexHullMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, "three points"), Error);
     EXPECT_THROW(convexHullMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0.5, 0.5, 0}}, "flat"), Error);
     EXPECT_THROW(convexHullMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, NAN}}, "nan"), Error);
+    EXPECT_THROW(convexHullMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1e301}}, "huge"), Error);
+    // Thinner than a grid cell (2^-40 of the largest side) is flat.
+    EXPECT_THROW(convexHullMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.3, 0.3, 1e-14}}, "sliver"), Error);
     EXPECT_TRUE(isConvex(convexHullMesh(test::sphere(1.0, 2).vertices, "sphere")));
     EXPECT_FALSE(isConvex(test::demoMesh("bunny.obj", 0.15)));
 }
