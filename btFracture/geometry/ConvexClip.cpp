@@ -14,30 +14,37 @@ namespace btfracture {
 ConvexPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::Vector3d& normal, double offset) {
     ConvexPolytope out;
     out.margin = polytope.margin;
-    const double limit = offset - polytope.margin;
-    std::vector<const Eigen::Vector3d*> dropped;
-    for (const Eigen::Vector3d& p : polytope.points)
-        if (normal.dot(p) <= limit)
-            out.points.push_back(p);
-        else
-            dropped.push_back(&p);
-    const std::size_t kept = out.points.size();
-    for (std::size_t i = 0; i < kept; ++i)
-        for (const Eigen::Vector3d* q : dropped) {
-            const Eigen::Vector3d p = out.points[i];
-            const double dp = normal.dot(p) - limit, dq = normal.dot(*q) - limit;  // dp <= 0 < dq
-            out.points.push_back(p + (dp / (dp - dq)) * (*q - p));
-        }
-    // Only the hull's corners matter (and the crossings outnumber them).
+    TriangleMesh hull;
     try {
-        const TriangleMesh hull = convexHullMesh(out.points, "cut convex piece");
-        std::vector<char> corner(hull.vertices.size(), 0);
-        for (const auto& t : hull.triangles)
-            for (int v : t) corner[v] = 1;
-        std::vector<Eigen::Vector3d> corners;
-        for (std::size_t v = 0; v < hull.vertices.size(); ++v)
-            if (corner[v]) corners.push_back(hull.vertices[v]);
-        out.points = std::move(corners);
+        hull = convexHullMesh(polytope.points, "convex piece");
+    } catch (const Error&) {
+        return out;  // flat: nothing with volume to cut
+    }
+    const double limit = offset - polytope.margin;
+    std::vector<char> kept(hull.vertices.size());
+    for (std::size_t v = 0; v < hull.vertices.size(); ++v) {
+        kept[v] = normal.dot(hull.vertices[v]) <= limit;
+        if (kept[v]) out.points.push_back(hull.vertices[v]);
+    }
+    const std::size_t keptCount = out.points.size();
+    if (keptCount == hull.vertices.size()) {
+        out.points = std::move(hull.vertices);  // nothing cut: the corners
+        return out;
+    }
+    if (keptCount == 0) return out;
+    // Each hull edge from a kept corner p to a cut one q (a closed mesh has each edge once in
+    // that direction) crosses the plane once.
+    for (const auto& t : hull.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const Eigen::Vector3d& p = hull.vertices[t[k]];
+            const Eigen::Vector3d& q = hull.vertices[t[(k + 1) % 3]];
+            if (!kept[t[k]] || kept[t[(k + 1) % 3]]) continue;
+            const double dp = normal.dot(p) - limit, dq = normal.dot(q) - limit;  // dp <= 0 < dq
+            out.points.push_back(p + (dp / (dp - dq)) * (q - p));
+        }
+    // Only the cut hull's corners matter.
+    try {
+        out.points = convexHullMesh(out.points, "cut convex piece").vertices;
     } catch (const Error&) {
         out.points.clear();  // flat: nothing with volume is left
     }

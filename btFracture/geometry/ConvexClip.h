@@ -8,9 +8,9 @@
 
 namespace btfracture {
 
-// The cut hull is the hull of the points with n.x <= offset - margin and of the points where the
-// segments between those and the others cross that plane (every vertex of the cut hull is a kept
-// point or a hull edge's crossing); its corners are returned. The margin is kept, so the result's
+// The cut hull is the hull of the hull's corners with n.x <= offset - margin and of the points
+// where the hull's edges from those to the others cross that plane (every vertex of the cut hull
+// is one of these); its corners are returned. The margin is kept, so the result's
 // surface reaches at most to the plane n.x = offset. `normal` must be a unit vector. No points
 // when what is left is flat or empty.
 ConvexPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::Vector3d& normal, double offset);
