@@ -2,7 +2,10 @@
 // Cost of a crack propagation step per method (paper §4.4): FULL (Eq. 4 every step), EST (local
 // stress + §4.3 update), HYBRID at two thresholds, on a penny crack growing in a cube of about
 // 2,000 surface triangles. Prints per step: crack triangles, active front nodes, step time and
-// time per front node, mean K_I and its difference to FULL; then the METRIC lines.
+// time per front node, mean K_I and its difference to FULL; then the METRIC lines. Then the
+// paper's sizes (Table 1: thousands of crack triangles): EST grows a penny with a crack element
+// size of a third of the BEM edge past 5,000 triangles, and FULL takes single steps on EST's
+// crack at about 500 and 5,000 triangles. `--large-only` runs just that part.
 #include <btFracture/bem/ElasticSolver.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/core/Timer.h>
@@ -12,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,10 +53,105 @@ std::vector<Sample> run(const ElasticSolver& solver, const Eigen::VectorXd& q, c
     return out;
 }
 
+// The large cube: 20 x 20 cells per face (4,800 surface triangles, edge 1 cm).
+constexpr int kLargeCubeCells = 20;
+
+// One timed step of `method` on a copy of `cracks` (the event set up beforehand, untimed).
+struct TimedStep {
+    int crackTriangles, frontNodes;
+    double seconds;
+};
+TimedStep stepOn(const ElasticSolver& solver, const Eigen::VectorXd& q, const Material& material,
+                 const FractureSettings& settings, const CrackMesh& cracks, int steps) {
+    FractureSolver fracture(solver, MaterialField(material), settings);
+    fracture.cracks() = cracks;
+    fracture.beginEvent(q);
+    TimedStep out{cracks.triangleCount(), 0, 0.0};
+    for (int i = 0; i < steps; ++i) {
+        Timer timer;
+        const FractureStepRecord r = fracture.step(i);
+        out.seconds += timer.seconds() / steps;
+        out.frontNodes += r.frontNodes / steps;
+    }
+    return out;
+}
+
+// The penny past 5,000 crack triangles: a cube of `cells` cells per face edge, crack element
+// size a third of the cell edge; EST grows the crack, FULL steps once (or `fullSteps` times) on
+// EST's crack at the first step from 500 and from 5,000 crack triangles.
+void largeCrack(const Material& material, int cells, int fullSteps) {
+    const double side = 0.2, edge = side / cells, h = edge / 3.0;
+    Timer setup;
+    const ElasticSolver solver(SurfaceMesh(makeBox({0.5 * side, 0.5 * side, 0.5 * side}, cells, cells, cells)),
+                               material);
+    const SurfaceMesh& m = solver.mesh();
+    Eigen::VectorXd q(3 * m.triangleCount());
+    for (int t = 0; t < m.triangleCount(); ++t) q.segment<3>(3 * t) = Eigen::Vector3d(1e6 * m.normal(t).x(), 0, 0);
+    std::printf("\nlarge crack: cube of %d surface triangles (edge %.4f m), crack element size %.5f m "
+                "(edge / 3), BEM set-up %.1f s\n",
+                m.triangleCount(), edge, h, setup.seconds());
+    FractureSettings fs;
+    fs.method = FractureMethod::Estimated;
+    fs.minimumSpeed = 1.0;
+    fs.maxNewCracksPerEvent = 0;
+    fs.frontEdgeLength = 1.0;
+    fs.crackElementSize = h;
+    FractureSolver est(solver, MaterialField(material), fs);
+    addDiscCrack(est.cracks(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 6 * h, 6);
+    est.beginEvent(q);
+    std::optional<CrackMesh> at500, at5k;
+    std::optional<TimedStep> est500, est5k;
+    std::printf("%5s %10s %6s %9s %13s\n", "step", "crack_tris", "front", "step_s", "s_per_front");
+    for (int i = 0; i < 200 && !est5k; ++i) {
+        const int before = est.cracks().triangleCount();
+        const CrackMesh snapshot = est.cracks();
+        Timer timer;
+        const FractureStepRecord r = est.step(i);
+        const double seconds = timer.seconds();
+        std::printf("%5d %10d %6d %9.4f %13.2e\n", i, before, r.frontNodes, seconds,
+                    seconds / std::max(1, r.frontNodes));
+        std::fflush(stdout);
+        if (!est500 && before >= 500) est500 = TimedStep{before, r.frontNodes, seconds}, at500 = snapshot;
+        if (before >= 5000) est5k = TimedStep{before, r.frontNodes, seconds}, at5k = snapshot;
+        if (r.advancedNodes == 0) break;
+    }
+    if (!est500 || !est5k) {
+        std::printf("METRIC est_step_speedup_5k nan ratio (EST arrested at %d crack triangles)\n",
+                    est.cracks().triangleCount());
+        return;
+    }
+    std::printf("METRIC est_step_growth_per_front_node_5k %.2f ratio (%d -> %d crack triangles, front %d -> %d "
+                "nodes, %.4f -> %.4f s)\n",
+                (est5k->seconds / est5k->frontNodes) / (est500->seconds / est500->frontNodes),
+                est500->crackTriangles, est5k->crackTriangles, est500->frontNodes, est5k->frontNodes,
+                est500->seconds, est5k->seconds);
+    std::fflush(stdout);
+    FractureSettings full = fs;
+    full.method = FractureMethod::Full;
+    const TimedStep full500 = stepOn(solver, q, material, full, *at500, fullSteps);
+    std::printf("FULL step on EST's crack of %d triangles: %.3f s (EST %.4f s)\n", full500.crackTriangles,
+                full500.seconds, est500->seconds);
+    std::printf("METRIC est_step_speedup_500 %.1f ratio\n", full500.seconds / est500->seconds);
+    std::fflush(stdout);
+    Timer fullTimer;
+    const TimedStep full5k = stepOn(solver, q, material, full, *at5k, fullSteps);
+    std::printf("FULL step on EST's crack of %d triangles: %.1f s (EST %.3f s; set-up and step %.0f s in all)\n",
+                full5k.crackTriangles, full5k.seconds, est5k->seconds, fullTimer.seconds());
+    std::printf("METRIC full_step_5k_s %.1f s (%d surface + %d crack triangles)\n", full5k.seconds,
+                m.triangleCount(), full5k.crackTriangles);
+    std::printf("METRIC est_step_speedup_5k %.1f ratio (FULL %.1f s / EST %.3f s per step)\n",
+                full5k.seconds / est5k->seconds, full5k.seconds, est5k->seconds);
+}
+
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+    const bool largeOnly = argc > 1 && std::string(argv[1]) == "--large-only";
     const Material material(3.1e9, 0.327, 1200.0, 1e9, 1e3, 2.0, "pmma-growing");
+    if (largeOnly) {
+        largeCrack(material, kLargeCubeCells, 1);
+        return 0;
+    }
     Timer setup;
     const ElasticSolver solver(SurfaceMesh(makeBox({0.2, 0.2, 0.2}, 13, 13, 13)), material);
     const SurfaceMesh& m = solver.mesh();
@@ -122,5 +221,7 @@ int main() {
         if (full[i].frontNodes >= 24 && est[i].frontNodes >= 24) last = i;
     std::printf("METRIC full_vs_est_speedup %.1f ratio (at %d crack triangles, %d front nodes)\n",
                 full[last].seconds / est[last].seconds, full[last].crackTriangles, full[last].frontNodes);
+    std::fflush(stdout);
+    largeCrack(material, kLargeCubeCells, 1);
     return 0;
 }

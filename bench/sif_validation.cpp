@@ -4,7 +4,8 @@
 // `METRIC <case> <relative error> ratio`. A case is a name and a function returning the relative
 // error; add one to `cases` below. Penny crack of radius a in a cube of side 8 a under tension
 // normal to it (Kassir & Sih): per ring count, the mean and worst-node K_I error and the largest
-// change of a node's K_I when the disc pattern is turned by 30 degrees (same polar angle).
+// change of a node's K_I when the disc pattern is turned by 30 degrees (same polar angle). Then
+// both with crack elements finer than the BEM surface's (h = BEM edge, / 2, / 3).
 #include <btFracture/bem/CrackSystem.h>
 #include <btFracture/bem/ElasticSolver.h>
 #include <btFracture/fracture/CrackSeed.h>
@@ -95,6 +96,44 @@ double pennyWorstNodeError() {
     return worst8;
 }
 
+// The crack finer than the BEM surface: the penny in a cube of 16 x 16 cells per face (BEM edge
+// a / 2) at 2, 4 and 6 rings (h = BEM edge, / 2, / 3); prints mean and worst-node K_I errors and
+// returns the worst node's at h = BEM edge / 3.
+double pennyFinerThanSurfaceError() {
+    const double a = 0.05;
+    const double exact = pennyCrackSifs(1e6, a, M_PI / 2, kMaterial.poissonRatio()).KI;
+    const ElasticSolver solver(SurfaceMesh(pennyCrackCube(a, 16)), kMaterial);
+    double worst = 0.0;
+    for (int rings : {2, 4, 6}) {
+        const FrontKI k = pennyKI(solver, kMaterial, a, rings, 0.0);
+        double mean = 0.0;
+        worst = 0.0;
+        for (double K : k.KI) {
+            mean += K / exact / k.KI.size();
+            worst = std::max(worst, std::abs(K / exact - 1.0));
+        }
+        std::printf("penny %d rings, h = BEM edge / %d (%d surface triangles): K_I mean %+.2f %%, worst node %.2f %%\n",
+                    rings, rings / 2, solver.mesh().triangleCount(), 100 * (mean - 1.0), 100 * worst);
+        std::fflush(stdout);
+    }
+    return worst;
+}
+
+// The edge crack (a/b = `ratio`, 4 surface elements along the depth) with crack elements of the
+// surface's size, half and a third of it; returns the K_I error at a third.
+double edgeCrackFinerThanSurfaceError(double ratio) {
+    double error = 0.0;
+    for (int refinement : {1, 2, 3}) {
+        const SurfaceCrackCase c = edgeCrackCase(ratio, kEdgeCrackElements, 0.0, refinement);
+        const SurfaceCrackResult r = solveSurfaceCrack(c, kMaterial);
+        error = r.KI / c.exactKI - 1.0;
+        std::printf("%s, crack h = surface h / %d: %d crack unknowns, K_I %+.1f %% of exact\n", c.name.c_str(),
+                    refinement, r.crackUnknowns, 100 * error);
+        std::fflush(stdout);
+    }
+    return std::abs(error);
+}
+
 }  // namespace
 
 int main() {
@@ -103,6 +142,8 @@ int main() {
         {"edge_crack_error_0p4", [] { return surfaceCrackError(edgeCrackCase(0.4, kEdgeCrackElements)); }},
         {"senb_error", [] { return surfaceCrackError(notchedBeamCase(kNotchedBeamElements)); }},
         {"penny_worst_node_error_8rings", pennyWorstNodeError},
+        {"penny_worst_node_error_h_third_of_bem_edge", pennyFinerThanSurfaceError},
+        {"edge_crack_error_0p2_h_third_of_bem_edge", [] { return edgeCrackFinerThanSurfaceError(0.2); }},
     };
     for (const Case& c : cases) {
         const double e = c.error();

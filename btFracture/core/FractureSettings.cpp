@@ -46,6 +46,8 @@ void MaterialNoise::validate(const std::string& where) const {
 
 void FractureMethodSettings::validate(const std::string& where) const {
     require(hybridElementThreshold >= 1, where, "hybridElementThreshold", hybridElementThreshold, ">= 1");
+    require(crackElementSize >= 0.0 && std::isfinite(crackElementSize), where, "crackElementSize",
+            crackElementSize, "finite, >= 0 m; 0 = the BEM mesh's");
 }
 
 void CrackSettings::validate(const std::string& where) const {

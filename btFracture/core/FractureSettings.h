@@ -2,8 +2,9 @@
 #pragma once
 // How cracks start and grow: the method (paper §3 FULL, §4 EST, §4.4 HYBRID), chosen per body
 // (FractureBodySettings), and the numerical knobs of initiation and propagation, chosen per
-// engine (BemFractureEngineSettings::fracture). Units: SI; lengths relative to the local BEM
-// element size h where stated.
+// engine (BemFractureEngineSettings::fracture). Units: SI; lengths relative to the crack
+// element size h where stated (FractureMethodSettings::crackElementSize, by default the local
+// BEM element size).
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -30,11 +31,16 @@ struct MaterialNoise {
     void validate(const std::string& where) const;
 };
 
-// Which method a body's cracks grow with (a part of FractureBodySettings).
+// Which method a body's cracks grow with and at what element size (a part of
+// FractureBodySettings).
 struct FractureMethodSettings {
     FractureMethod method = FractureMethod::Hybrid;
     // BEM elements (surface + crack triangles) at which HYBRID switches from FULL to EST, >= 1.
     int hybridElementThreshold = 2000;
+    // Crack element size h [m], the unit of CrackSettings::seedRadius and frontEdgeLength,
+    // independent of the BEM surface (FractureRB's crack mesh size). 0: relative to the BEM mesh
+    // (seeds: the seeding triangle's diameter; fronts: the mean BEM triangle diameter).
+    double crackElementSize = 0.0;
     // Throws btfracture::Error "<where>: ..." naming the field and value.
     void validate(const std::string& where) const;
 };
@@ -43,8 +49,8 @@ struct FractureMethodSettings {
 struct CrackSettings {
     int maxNewCracksPerEvent = 7;  // initiation cap (the authors' bunny example: 7)
     int maxStepsPerEvent = 40;     // propagation budget besides the contact duration
-    double seedRadius = 0.5;       // hexagonal seed circumradius [h of the seeding triangle]
-    double frontEdgeLength = 1.0;  // target length of new front edges [h of the body mesh]
+    double seedRadius = 0.5;       // hexagonal seed circumradius [h]
+    double frontEdgeLength = 1.0;  // target length of new front edges [h]
     double minimumSpeed = 0.1;     // crack speed floor [fraction of the Rayleigh speed]
     // k of §4.2. The paper uses 1.1215 (through edge crack, Gross & Seelig table 4.1), but its
     // BEM and ours represent every crack with zero opening on the whole sheet boundary, i.e. as

@@ -22,7 +22,9 @@ FractureSolver::FractureSolver(const ElasticSolver& solver, MaterialField field,
     active_ =
         settings_.method == FractureMethod::Estimated ? FractureMethod::Estimated : FractureMethod::Full;
     const SurfaceMesh& mesh = solver_.mesh();
-    for (int t = 0; t < mesh.triangleCount(); ++t) meanSize_ += mesh.diameter(t) / mesh.triangleCount();
+    elementSize_ = settings_.crackElementSize;
+    if (elementSize_ == 0.0)
+        for (int t = 0; t < mesh.triangleCount(); ++t) elementSize_ += mesh.diameter(t) / mesh.triangleCount();
     seeded_.assign(mesh.triangleCount(), 0);
     crackLoad_ = Eigen::VectorXd::Zero(3 * mesh.nodeCount());
 }
@@ -63,7 +65,7 @@ int FractureSolver::seed() {
         surfaceStresses(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), displacements_, tractions_);
     const auto candidates = findSeedCandidates(solver_.mesh(), stresses, field_, cracks_, seeded_);
     const int seeds = seedCracks(cracks_, solver_.mesh(), candidates, settings_.maxNewCracksPerEvent,
-                                 settings_.seedRadius, seeded_);
+                                 settings_.seedRadius, settings_.crackElementSize, seeded_);
     arrested_.resize(cracks_.nodeCount(), 0);
     if (seeds > 0) {
         const std::vector<int> fresh = cracks_.refreshUnknowns(solver_.mesh());
@@ -188,7 +190,7 @@ FractureStepRecord FractureSolver::step(int index) {
             std::max(record.maxLoadRatio, effectiveK(f.KI, f.KII, f.KIII, m.poissonRatio()) / Kc);
         advances[f.node] =
             advanceOf(f, field_.fractureToughness(f.position), m.compressiveFactor(), m.poissonRatio(),
-                      settings_.frontEdgeLength * meanSize_, settings_.minimumSpeed);
+                      settings_.frontEdgeLength * elementSize_, settings_.minimumSpeed);
     }
     // Nodes the observer stops end this step's move level with where their markers stopped
     // (never past their own step), then stop for good.
@@ -204,7 +206,7 @@ FractureStepRecord FractureSolver::step(int index) {
         }
     }
     const GrowthResult growth =
-        growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * meanSize_, arrested_);
+        growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * elementSize_, arrested_);
     int stopped = 0;
     for (const int node : stopAfter) {
         const auto moved = growth.newNode.find(node);
@@ -309,7 +311,7 @@ FractureEventReport FractureSolver::run(const Eigen::VectorXd& q, double contact
     int budget = settings_.maxStepsPerEvent;
     if (contactDuration > 0.0) {
         const double steps =
-            contactDuration * field_.material().rayleighWaveSpeed() / (settings_.frontEdgeLength * meanSize_);
+            contactDuration * field_.material().rayleighWaveSpeed() / (settings_.frontEdgeLength * elementSize_);
         budget = std::min(budget, std::max(1, static_cast<int>(std::lround(steps))));
     }
     for (int i = 0; i < budget && !cracks_.frontEdges().empty(); ++i) {

@@ -105,7 +105,9 @@ private:
     CrackMesh cracks_;
     std::unique_ptr<CrackSystem> full_;  // FULL mode only
     FractureMethod active_;
-    double meanSize_ = 0.0;  // mean BEM triangle diameter h [m]
+    // Crack element size h of new front edges [m]: crackElementSize, or the mean BEM triangle
+    // diameter where that is 0.
+    double elementSize_ = 0.0;
     Eigen::VectorXd tractions_, load_, crackLoad_, displacements_;
     // EST: the event's crack-free displacements (no §4.3), their peak surface stress (negative
     // until computed), read by the gain limit and the stress bound.

@@ -51,7 +51,7 @@ std::vector<SeedCandidate> findSeedCandidates(const SurfaceMesh& mesh,
 }
 
 int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<SeedCandidate>& candidates,
-               int maxSeeds, double seedRadius, std::vector<char>& blocked) {
+               int maxSeeds, double seedRadius, double elementSize, std::vector<char>& blocked) {
     int seeds = 0;
     std::vector<Eigen::Vector3d> seededAt;
     for (const SeedCandidate& c : candidates) {
@@ -78,7 +78,7 @@ int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<See
         // where glass breaks.
         CrackMesh trial;
         bool inside = false;
-        double r = seedRadius * h;
+        double r = seedRadius * (elementSize > 0.0 ? elementSize : h);
         for (int halving = 0; halving <= kSeedHalvings && !inside; ++halving, r *= 0.5) {
             trial = cracks;
             addDiscCrack(trial, x + (1.05 * r) * inward, c.crackNormal, r, 1, rotation);

@@ -30,8 +30,8 @@ PennyCrackSifs pennyCrackSifs(double stress, double radius, double alpha, double
     return k;
 }
 
-TriangleMesh pennyCrackCube(double radius) {
-    return makeBox(Eigen::Vector3d(4 * radius, 4 * radius, 4 * radius), 6, 6, 6);
+TriangleMesh pennyCrackCube(double radius, int cells) {
+    return makeBox(Eigen::Vector3d(4 * radius, 4 * radius, 4 * radius), cells, cells, cells);
 }
 
 namespace {
@@ -75,7 +75,7 @@ std::vector<double> sheetLines(double from, double to, double h, double extensio
 
 }  // namespace
 
-SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension) {
+SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension, int crackRefinement) {
     const double b = 0.1, a = ratio * b, thickness = 0.5 * b, sigma = 1e6;
     const double h = a / elementsPerDepth;
     SurfaceCrackCase c;
@@ -88,8 +88,8 @@ SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extens
     c.origin = Eigen::Vector3d::Zero();
     c.U = Eigen::Vector3d::UnitX();
     c.V = Eigen::Vector3d::UnitZ();
-    c.along = sheetLines(0.0, a, h, extension);
-    const int acrossCells = 2 * static_cast<int>(std::ceil(0.25 * thickness / h));
+    c.along = sheetLines(0.0, a, h / crackRefinement, extension);
+    const int acrossCells = 2 * static_cast<int>(std::ceil(0.25 * thickness / h)) * crackRefinement;
     std::vector<double> across;
     if (extension > 0.0) across.push_back(-0.5 * thickness - extension * thickness / acrossCells);
     for (int i = 0; i <= acrossCells; ++i) across.push_back(thickness * (double(i) / acrossCells - 0.5));

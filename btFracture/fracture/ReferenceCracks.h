@@ -31,9 +31,9 @@ struct PennyCrackSifs {
 };
 PennyCrackSifs pennyCrackSifs(double stress, double radius, double alpha, double poissonRatio);
 
-// The penny-crack body: a cube of side 8 a (6 x 6 cells per face), large enough that the free
-// surface changes K_I by about 1 %.
-TriangleMesh pennyCrackCube(double radius);
+// The penny-crack body: a cube of side 8 a (`cells` x `cells` squares per face, edge 8 a / cells),
+// large enough that the free surface changes K_I by about 1 %.
+TriangleMesh pennyCrackCube(double radius, int cells = 6);
 
 // Surface-breaking through cracks, solved by FULL: a planar sheet from the body's surface to a
 // straight front across the whole thickness, poking `extension` elements past the surface (0:
@@ -52,8 +52,11 @@ struct SurfaceCrackCase {
 
 // Plate of width b (x), height 4 b (y) and thickness b/2 (z) under uniform tension sigma along y,
 // straight edge crack of depth a = ratio b from the face x = 0; h = a / elementsPerDepth on the
-// crack and the surface near it. Exact: sigma sqrt(pi a) F(a/b) (Tada's fit, 0.5 % for a/b <= 0.6).
-SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension = 0.0);
+// surface near the crack, h / crackRefinement on the crack (the mouth then has sheet nodes
+// between surface nodes, held shut). Exact: sigma sqrt(pi a) F(a/b) (Tada's fit, 0.5 % for
+// a/b <= 0.6).
+SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension = 0.0,
+                               int crackRefinement = 1);
 // ASTM E399 single-edge-notched beam in three-point bending: depth W (y), span S = 4 W, thickness
 // B = W/2, a/W = 0.5, load P on a patch of the top face over the crack, P/2 on a patch over each
 // support; h = a / elementsPerDepth near the crack. Exact: P S / (B W^1.5) f(a/W).

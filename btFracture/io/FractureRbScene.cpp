@@ -634,6 +634,7 @@ Scene readFractureRbScene(const std::string& bulletFile, const std::string& csvF
         body.fracture.fracturable = true;
         body.fracture.method = b.method;
         body.fracture.voxelSize = b.voxelSize;
+        body.fracture.crackElementSize = b.crackMeshSize;
         const int own = body.shape.type == SceneShapeType::Mesh
                             ? static_cast<int>(body.shape.meshData->triangles.size())
                         : body.shape.type == SceneShapeType::Box ? 12
@@ -642,8 +643,7 @@ Scene readFractureRbScene(const std::string& bulletFile, const std::string& csvF
         // FractureRB collides with the body's own mesh, so that is the collision resolution.
         body.fracture.collisionTriangleTarget = std::max(own, body.fracture.bemTriangleTarget);
         logf(LogLevel::Info, where, ": '", body.name, "' breaks: ", body.fracture.bemTriangleTarget,
-             " BEM triangles, voxel ", b.voxelSize, " m; crack mesh size ", b.crackMeshSize,
-             " m not used (btFracture's crack elements follow the BEM mesh)");
+             " BEM triangles, voxel ", b.voxelSize, " m, crack element size ", b.crackMeshSize, " m");
         if (b.materialModel != "default")
             logf(LogLevel::Warning, where, ": column 20 (material model): '", shownToken(b.materialModel),
                  "' is not supported; using the homogeneous values of columns 12-17");

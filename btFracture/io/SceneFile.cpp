@@ -342,10 +342,11 @@ private:
         }
     }
 
-    // A body's "resolution": the three resolution fields of its fracture settings.
+    // A body's "resolution": the resolution fields of its fracture settings.
     void resolution(const Json& value, const std::string& path, FractureBodySettings& r) const {
-        requireObject(value, path, "an object {bem_triangles, collision_triangles, voxel_size}");
-        allowOnly(value, path, {"bem_triangles", "collision_triangles", "voxel_size"});
+        requireObject(value, path,
+                      "an object {bem_triangles, collision_triangles, voxel_size, crack_element_size}");
+        allowOnly(value, path, {"bem_triangles", "collision_triangles", "voxel_size", "crack_element_size"});
         if (value.contains("bem_triangles"))
             r.bemTriangleTarget = integer(value["bem_triangles"], child(path, "bem_triangles"), 4);
         if (value.contains("collision_triangles"))
@@ -353,6 +354,13 @@ private:
                 integer(value["collision_triangles"], child(path, "collision_triangles"), 4);
         if (value.contains("voxel_size"))
             r.voxelSize = positive(value["voxel_size"], child(path, "voxel_size"), "m");
+        if (value.contains("crack_element_size")) {
+            const std::string cpath = child(path, "crack_element_size");
+            const std::string expected = "a number >= 0 [m] (0: relative to the BEM mesh)";
+            r.crackElementSize = number(value["crack_element_size"], cpath, expected);
+            if (!(r.crackElementSize >= 0.0))
+                fail(cpath, "expected " + expected + ", got " + shown(value["crack_element_size"]));
+        }
         if (r.collisionTriangleTarget < r.bemTriangleTarget)
             fail(path, "collision_triangles (" + std::to_string(r.collisionTriangleTarget) +
                            ") must be >= bem_triangles (" + std::to_string(r.bemTriangleTarget) +

@@ -83,7 +83,7 @@ struct SceneBody {
     // From effects.fracture.<name> (fracturable, method, hybridElementThreshold,
     // impulseThreshold, maxRefractureDepth, materialNoise: amplitude, wavelength and the body's
     // seed, which the runner combines with SceneEffects::seed) and the body's "resolution"
-    // (bemTriangleTarget, collisionTriangleTarget, voxelSize).
+    // (bemTriangleTarget, collisionTriangleTarget, voxelSize, crackElementSize).
     FractureBodySettings fracture = unbreakable();
 
     // Never moves: a plane or mass 0 (kinematic bodies move, so they are not static).

@@ -81,7 +81,8 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     const Scene s = parseScene(R"({"bodies": [
         {"name": "ground", "shape": {"type": "plane"}, "friction": 0.8},
         {"name": "pane", "shape": {"type": "box", "half_extents": [0.5, 0.5, 0.005]}, "material": "glass",
-         "resolution": {"bem_triangles": 600, "collision_triangles": 2400, "voxel_size": 0.002}},
+         "resolution": {"bem_triangles": 600, "collision_triangles": 2400, "voxel_size": 0.002,
+                        "crack_element_size": 0.01}},
         {"name": "rock", "shape": {"type": "sphere", "radius": 0.1}, "state": "sleeping", "restitution": 0.25},
         {"name": "pusher", "shape": {"type": "box", "half_extents": [0.1, 0.1, 0.1]}, "state": "kinematic",
          "linear_velocity": [1, 0, 0]}],
@@ -99,6 +100,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_EQ(pane.fracture.bemTriangleTarget, 600);
     EXPECT_EQ(pane.fracture.collisionTriangleTarget, 2400);
     EXPECT_DOUBLE_EQ(pane.fracture.voxelSize, 0.002);
+    EXPECT_DOUBLE_EQ(pane.fracture.crackElementSize, 0.01);
     EXPECT_TRUE(pane.fracture.fracturable);
     EXPECT_EQ(pane.fracture.method, FractureMethod::Hybrid);
     EXPECT_EQ(pane.fracture.hybridElementThreshold, 3000);
@@ -110,6 +112,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_TRUE(rock.fracture.fracturable);
     EXPECT_EQ(rock.fracture.method, FractureMethod::Estimated);
     EXPECT_EQ(rock.fracture.maxRefractureDepth, 3);  // default
+    EXPECT_DOUBLE_EQ(rock.fracture.crackElementSize, 0.0);  // default: relative to the BEM mesh
     EXPECT_EQ(rock.motion, SceneMotion::Sleeping);
     EXPECT_DOUBLE_EQ(rock.restitution, 0.25);
     EXPECT_EQ(s.bodies[3].motion, SceneMotion::Kinematic);
@@ -257,6 +260,12 @@ TEST(SceneFile, WrongTypesAndBadValues) {
          "test.json: bodies[1].resolution: collision_triangles (400) must be >= bem_triangles (900)"},
         {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"voxel_size": -1}})"),
          "test.json: bodies[1].resolution.voxel_size: expected a positive number [m], got -1"},
+        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"crack_element_size": -0.01}})"),
+         "test.json: bodies[1].resolution.crack_element_size: expected a number >= 0 [m] (0: relative to the BEM "
+         "mesh), got -0.01"},
+        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"crack_element_size": "fine"}})"),
+         "test.json: bodies[1].resolution.crack_element_size: expected a number >= 0 [m] (0: relative to the BEM "
+         "mesh), got \"fine\""},
         {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"bem_triangles": 2}})"),
          "test.json: bodies[1].resolution.bem_triangles: expected an integer >= 4, got 2"},
         {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "state": "frozen"})"),
