@@ -2,11 +2,9 @@
 // Fracture driver: propagation law, estimator (§4.2) against FULL on growing mode-I and mode-II
 // cracks with and without the right-hand-side update (§4.3) and its gain limit, the inverse
 // correlation of §4.3, the hybrid switch (§4.4) and FULL against HYBRID after it,
-// initiation (seeds halved to fit a thin wall), the crack element size of seeds and fronts,
-// arrest at the surface (also of a front edge's midpoint across a hole), a manifold front,
-// determinism.
+// initiation (seeds halved to fit a thin wall), arrest at the surface (also of a front edge's
+// midpoint across a hole), a manifold front, determinism.
 #include <btFracture/bem/ElasticSolver.h>
-#include <btFracture/core/Error.h>
 #include <btFracture/core/Intersection.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/fracture/CrackGrowth.h>
@@ -377,57 +375,6 @@ TEST(FractureSolver, InitiationSeedsCracksPerpendicularToTension) {
             closest = std::min(closest, (fracture.cracks().node(i) - fracture.cracks().node(j)).norm());
     if (again.seeds > 0) {
         EXPECT_GT(closest, 0.01);
-    }
-}
-
-// FractureMethodSettings::crackElementSize [m] replaces the BEM element size h in the seed
-// radius and the new front edges: on the growth slab (2 cm cells, 2.8 cm triangle diameters)
-// with h = 4 mm, seeds are hexagons of circumradius 0.5 h and a growing front moves 0.6 h per
-// full-speed step with edges no longer than the split limit 1.5 x 0.6 h. Bad values name the field.
-TEST(FractureSolver, CrackElementSizeSetsSeedsAndFrontEdges) {
-    const double h = 0.004;
-    const Material weak(3.1e9, 0.327, 1200.0, 5e5, 1e9, 2.0, "weak");  // tough: seeds do not grow
-    Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
-    sigma(0, 0) = 1e6;
-    const Slab pulled = slab(sigma, weak);
-    FractureSettings seeding;
-    seeding.maxNewCracksPerEvent = 3;
-    seeding.crackElementSize = h;
-    FractureSolver seeded(*pulled.solver, MaterialField(weak), seeding);
-    EXPECT_EQ(seeded.run(pulled.tractions, 0.0).seeds, 3);
-    ASSERT_EQ(seeded.cracks().triangleCount(), 18);
-    for (const auto& e : seeded.cracks().frontEdges())  // a hexagon's edge is its circumradius
-        EXPECT_NEAR((seeded.cracks().node(e.a) - seeded.cracks().node(e.b)).norm(), 0.5 * h, 1e-9);
-
-    const Slab s = slab(modeOneStress(), kGrowing);
-    FractureSettings fs = growthSettings(FractureMethod::Estimated);
-    fs.crackElementSize = h;
-    FractureSolver fracture(*s.solver, MaterialField(kGrowing), fs);
-    addGrowthPreCrack(fracture.cracks());
-    const Eigen::Vector3d centre(0.0, 0.03, 0.0);
-    auto meanFrontRadius = [&] {
-        double sum = 0.0;
-        const auto& front = fracture.cracks().frontEdges();
-        for (const auto& e : front) sum += (fracture.cracks().node(e.a) - centre).norm() / front.size();
-        return sum;
-    };
-    fracture.beginEvent(s.tractions);  // finds the front
-    const double before = meanFrontRadius();
-    const int steps = 4;
-    for (int i = 0; i < steps; ++i) ASSERT_GT(fracture.step(i).advancedNodes, 0);
-    EXPECT_NEAR((meanFrontRadius() - before) / (steps * fs.frontEdgeLength * h), 1.0, 0.1);
-    for (const auto& e : fracture.cracks().frontEdges())
-        EXPECT_LE((fracture.cracks().node(e.a) - fracture.cracks().node(e.b)).norm(),
-                  1.5 * fs.frontEdgeLength * h + 1e-9);
-
-    FractureSettings bad;
-    bad.crackElementSize = -0.001;
-    try {
-        FractureSolver rejected(*s.solver, MaterialField(kGrowing), bad);
-        ADD_FAILURE() << "a negative crack element size was accepted";
-    } catch (const Error& e) {
-        EXPECT_STREQ(e.what(),
-                     "fracture settings: crackElementSize -0.001 (need finite, >= 0 m; 0 = the BEM mesh's)");
     }
 }
 
