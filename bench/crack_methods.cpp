@@ -82,14 +82,16 @@ TimedStep stepOn(const ElasticSolver& solver, const Eigen::VectorXd& q, const Ma
 void largeCrack(const Material& material, int cells, int fullSteps) {
     const double side = 0.2, edge = side / cells, h = edge / 3.0;
     Timer setup;
-    const ElasticSolver solver(SurfaceMesh(makeBox({0.5 * side, 0.5 * side, 0.5 * side}, cells, cells, cells)),
-                               material);
+    const ElasticSolver solver(
+        SurfaceMesh(makeBox({0.5 * side, 0.5 * side, 0.5 * side}, cells, cells, cells)), material);
     const SurfaceMesh& m = solver.mesh();
     Eigen::VectorXd q(3 * m.triangleCount());
-    for (int t = 0; t < m.triangleCount(); ++t) q.segment<3>(3 * t) = Eigen::Vector3d(1e6 * m.normal(t).x(), 0, 0);
-    std::printf("\nlarge crack: cube of %d surface triangles (edge %.4f m), crack element size %.5f m "
-                "(edge / 3), BEM set-up %.1f s\n",
-                m.triangleCount(), edge, h, setup.seconds());
+    for (int t = 0; t < m.triangleCount(); ++t)
+        q.segment<3>(3 * t) = Eigen::Vector3d(1e6 * m.normal(t).x(), 0, 0);
+    std::printf(
+        "\nlarge crack: cube of %d surface triangles (edge %.4f m), crack element size %.5f m "
+        "(edge / 3), BEM set-up %.1f s\n",
+        m.triangleCount(), edge, h, setup.seconds());
     FractureSettings fs;
     fs.method = FractureMethod::Estimated;
     fs.minimumSpeed = 1.0;
@@ -120,11 +122,11 @@ void largeCrack(const Material& material, int cells, int fullSteps) {
                     est.cracks().triangleCount());
         return;
     }
-    std::printf("METRIC est_step_growth_per_front_node_5k %.2f ratio (%d -> %d crack triangles, front %d -> %d "
-                "nodes, %.4f -> %.4f s)\n",
-                (est5k->seconds / est5k->frontNodes) / (est500->seconds / est500->frontNodes),
-                est500->crackTriangles, est5k->crackTriangles, est500->frontNodes, est5k->frontNodes,
-                est500->seconds, est5k->seconds);
+    std::printf(
+        "METRIC est_step_growth_per_front_node_5k %.2f ratio (%d -> %d crack triangles, front %d -> %d "
+        "nodes, %.4f -> %.4f s)\n",
+        (est5k->seconds / est5k->frontNodes) / (est500->seconds / est500->frontNodes), est500->crackTriangles,
+        est5k->crackTriangles, est500->frontNodes, est5k->frontNodes, est500->seconds, est5k->seconds);
     std::fflush(stdout);
     FractureSettings full = fs;
     full.method = FractureMethod::Full;
@@ -135,8 +137,9 @@ void largeCrack(const Material& material, int cells, int fullSteps) {
     std::fflush(stdout);
     Timer fullTimer;
     const TimedStep full5k = stepOn(solver, q, material, full, *at5k, fullSteps);
-    std::printf("FULL step on EST's crack of %d triangles: %.1f s (EST %.3f s; set-up and step %.0f s in all)\n",
-                full5k.crackTriangles, full5k.seconds, est5k->seconds, fullTimer.seconds());
+    std::printf(
+        "FULL step on EST's crack of %d triangles: %.1f s (EST %.3f s; set-up and step %.0f s in all)\n",
+        full5k.crackTriangles, full5k.seconds, est5k->seconds, fullTimer.seconds());
     std::printf("METRIC full_step_5k_s %.1f s (%d surface + %d crack triangles)\n", full5k.seconds,
                 m.triangleCount(), full5k.crackTriangles);
     std::printf("METRIC est_step_speedup_5k %.1f ratio (FULL %.1f s / EST %.3f s per step)\n",

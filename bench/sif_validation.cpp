@@ -112,8 +112,10 @@ double pennyFinerThanSurfaceError() {
             mean += K / exact / k.KI.size();
             worst = std::max(worst, std::abs(K / exact - 1.0));
         }
-        std::printf("penny %d rings, h = BEM edge / %d (%d surface triangles): K_I mean %+.2f %%, worst node %.2f %%\n",
-                    rings, rings / 2, solver.mesh().triangleCount(), 100 * (mean - 1.0), 100 * worst);
+        std::printf(
+            "penny %d rings, h = BEM edge / %d (%d surface triangles): K_I mean %+.2f %%, worst node %.2f "
+            "%%\n",
+            rings, rings / 2, solver.mesh().triangleCount(), 100 * (mean - 1.0), 100 * worst);
         std::fflush(stdout);
     }
     return worst;
@@ -127,8 +129,8 @@ double edgeCrackFinerThanSurfaceError(double ratio) {
         const SurfaceCrackCase c = edgeCrackCase(ratio, kEdgeCrackElements, 0.0, refinement);
         const SurfaceCrackResult r = solveSurfaceCrack(c, kMaterial);
         error = r.KI / c.exactKI - 1.0;
-        std::printf("%s, crack h = surface h / %d: %d crack unknowns, K_I %+.1f %% of exact\n", c.name.c_str(),
-                    refinement, r.crackUnknowns, 100 * error);
+        std::printf("%s, crack h = surface h / %d: %d crack unknowns, K_I %+.1f %% of exact\n",
+                    c.name.c_str(), refinement, r.crackUnknowns, 100 * error);
         std::fflush(stdout);
     }
     return std::abs(error);

@@ -24,7 +24,8 @@ FractureSolver::FractureSolver(const ElasticSolver& solver, MaterialField field,
     const SurfaceMesh& mesh = solver_.mesh();
     elementSize_ = settings_.crackElementSize;
     if (elementSize_ == 0.0)
-        for (int t = 0; t < mesh.triangleCount(); ++t) elementSize_ += mesh.diameter(t) / mesh.triangleCount();
+        for (int t = 0; t < mesh.triangleCount(); ++t)
+            elementSize_ += mesh.diameter(t) / mesh.triangleCount();
     seeded_.assign(mesh.triangleCount(), 0);
     crackLoad_ = Eigen::VectorXd::Zero(3 * mesh.nodeCount());
 }
@@ -205,8 +206,8 @@ FractureStepRecord FractureSolver::step(int index) {
                     std::clamp((stop - cracks_.node(node)).dot(a->second.direction), 0.0, a->second.distance);
         }
     }
-    const GrowthResult growth =
-        growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * elementSize_, arrested_);
+    const GrowthResult growth = growFronts(cracks_, advances, solver_.mesh(),
+                                           1.5 * settings_.frontEdgeLength * elementSize_, arrested_);
     int stopped = 0;
     for (const int node : stopAfter) {
         const auto moved = growth.newNode.find(node);
@@ -310,8 +311,8 @@ FractureEventReport FractureSolver::run(const Eigen::VectorXd& q, double contact
     // Budget: the contact time at the Rayleigh speed, one element per step (FractureRB).
     int budget = settings_.maxStepsPerEvent;
     if (contactDuration > 0.0) {
-        const double steps =
-            contactDuration * field_.material().rayleighWaveSpeed() / (settings_.frontEdgeLength * elementSize_);
+        const double steps = contactDuration * field_.material().rayleighWaveSpeed() /
+                             (settings_.frontEdgeLength * elementSize_);
         budget = std::min(budget, std::max(1, static_cast<int>(std::lround(steps))));
     }
     for (int i = 0; i < budget && !cracks_.frontEdges().empty(); ++i) {

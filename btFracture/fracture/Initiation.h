@@ -30,11 +30,11 @@ std::vector<SeedCandidate> findSeedCandidates(const SurfaceMesh& mesh,
                                               const std::vector<char>& blocked);
 
 // Adds up to `maxSeeds` hexagonal seeds for the candidates (circumradius seedRadius x h, h the
-// crack element size `elementSize` [m], or the triangle's diameter where it is 0); a seed that would poke out of the body (near an edge, in a thin wall)
-// is halved, at most twice. A candidate whose crack plane is nearly parallel to the surface, or
-// whose quarter-size seed still pokes out, is skipped with a log line. Seeds of one event keep
-// the distance rule among themselves too. Marks seeded triangles in `blocked`. Returns the
-// number of seeds.
+// crack element size `elementSize` [m], or the triangle's diameter where it is 0); a seed that
+// would poke out of the body (near an edge, in a thin wall) is halved, at most twice. A candidate
+// whose crack plane is nearly parallel to the surface, or whose quarter-size seed still pokes
+// out, is skipped with a log line. Seeds of one event keep the distance rule among themselves
+// too. Marks seeded triangles in `blocked`. Returns the number of seeds.
 int seedCracks(CrackMesh& cracks, const SurfaceMesh& mesh, const std::vector<SeedCandidate>& candidates,
                int maxSeeds, double seedRadius, double elementSize, std::vector<char>& blocked);
 

@@ -90,7 +90,8 @@ TEST(CrackElementSize, PennyKIHoldsWithCrackElementsFinerThanTheBemSurface) {
         CrackSystem system(solver, cracks);
         addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), a, rings);
         system.update();
-        const auto sifs = displacementCorrelation(system.cracks(), system.nodalOpenings(system.solve(q)), material);
+        const auto sifs =
+            displacementCorrelation(system.cracks(), system.nodalOpenings(system.solve(q)), material);
         double mean = 0.0, worst = 0.0, shear = 0.0;
         for (const auto& f : sifs) {
             mean += f.KI / sifs.size();

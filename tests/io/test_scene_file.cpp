@@ -111,7 +111,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     const SceneBody& rock = s.bodies[2];
     EXPECT_TRUE(rock.fracture.fracturable);
     EXPECT_EQ(rock.fracture.method, FractureMethod::Estimated);
-    EXPECT_EQ(rock.fracture.maxRefractureDepth, 3);  // default
+    EXPECT_EQ(rock.fracture.maxRefractureDepth, 3);         // default
     EXPECT_DOUBLE_EQ(rock.fracture.crackElementSize, 0.0);  // default: relative to the BEM mesh
     EXPECT_EQ(rock.motion, SceneMotion::Sleeping);
     EXPECT_DOUBLE_EQ(rock.restitution, 0.25);
@@ -260,12 +260,14 @@ TEST(SceneFile, WrongTypesAndBadValues) {
          "test.json: bodies[1].resolution: collision_triangles (400) must be >= bem_triangles (900)"},
         {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"voxel_size": -1}})"),
          "test.json: bodies[1].resolution.voxel_size: expected a positive number [m], got -1"},
-        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"crack_element_size": -0.01}})"),
-         "test.json: bodies[1].resolution.crack_element_size: expected a number >= 0 [m] (0: relative to the BEM "
-         "mesh), got -0.01"},
-        {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"crack_element_size": "fine"}})"),
-         "test.json: bodies[1].resolution.crack_element_size: expected a number >= 0 [m] (0: relative to the BEM "
-         "mesh), got \"fine\""},
+        {withBody(
+             R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"crack_element_size": -0.01}})"),
+         "test.json: bodies[1].resolution.crack_element_size: expected a number >= 0 [m] (0: relative to "
+         "the BEM mesh), got -0.01"},
+        {withBody(
+             R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"crack_element_size": "fine"}})"),
+         "test.json: bodies[1].resolution.crack_element_size: expected a number >= 0 [m] (0: relative to "
+         "the BEM mesh), got \"fine\""},
         {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "resolution": {"bem_triangles": 2}})"),
          "test.json: bodies[1].resolution.bem_triangles: expected an integer >= 4, got 2"},
         {withBody(R"({"shape": {"type": "sphere", "radius": 1}, "state": "frozen"})"),
