@@ -88,7 +88,7 @@ TEST(FractureRb, ExampleMatchesItsGenerator) {
     EXPECT_EQ(brick.fracture.method, FractureMethod::Full);
     EXPECT_EQ(brick.fracture.bemTriangleTarget, 800);  // the row's remesh target
     EXPECT_DOUBLE_EQ(brick.fracture.voxelSize, 0.002);
-    EXPECT_DOUBLE_EQ(brick.fracture.crackElementSize, 0.01);  // column 10, the crack mesh size [m]
+    EXPECT_DOUBLE_EQ(brick.fracture.crackElementSize, 0.025);  // column 10, the crack mesh size [m]
     EXPECT_NEAR((brick.position - Eigen::Vector3d(0, 0.035, 0)).norm(), 0.0, 1e-7);
 
     const SceneBody& ball = bodyNamed(scene, "ball");
