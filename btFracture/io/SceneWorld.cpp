@@ -327,6 +327,18 @@ void SceneWorld::stepFrame() {
 int SceneWorld::framesTaken() const {
     return impl_->frames;
 }
+const SceneWorld::Body* SceneWorld::firstNonFiniteBody() const {
+    for (const Body& b : bodies()) {
+        const btTransform& t = b.rigidBody->getWorldTransform();
+        const btVector3 p = t.getOrigin(), v = b.rigidBody->getLinearVelocity(), w = b.rigidBody->getAngularVelocity();
+        const btQuaternion q = t.getRotation();
+        if (!std::isfinite(p.x() + p.y() + p.z() + v.x() + v.y() + v.z() + w.x() + w.y() + w.z() + q.x() +
+                           q.y() + q.z() + q.w()))
+            return &b;
+    }
+    return nullptr;
+}
+
 double SceneWorld::time() const {
     return impl_->frames * impl_->scene.world.dt;
 }

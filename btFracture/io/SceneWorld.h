@@ -89,6 +89,9 @@ public:
         std::vector<bool> crackFaces;      // per surface triangle: made by a cut (io/CrackFaces.h)
     };
     const std::vector<Body>& bodies() const;
+    // The first body (in bodies() order) whose position, orientation or velocity is NaN or Inf;
+    // nullptr while every state is finite.
+    const Body* firstNonFiniteBody() const;
     // Body `index`'s surface at its current pose, in world coordinates.
     TriangleMesh worldSurface(size_t index) const;
 

@@ -269,14 +269,6 @@ fs::path prepareOutput(const std::string& directory) {
     return dir;
 }
 
-bool finite(const btRigidBody& body) {
-    const btTransform& t = body.getWorldTransform();
-    const btVector3 p = t.getOrigin(), v = body.getLinearVelocity(), w = body.getAngularVelocity();
-    const btQuaternion q = t.getRotation();
-    return std::isfinite(p.x() + p.y() + p.z() + v.x() + v.y() + v.z() + w.x() + w.y() + w.z() + q.x() +
-                         q.y() + q.z() + q.w());
-}
-
 // Output at step 0, every `every` steps and at the last step (every = 0: never).
 bool isOutputStep(int step, int every, int steps) {
     return every > 0 && (step % every == 0 || step == steps);
@@ -542,12 +534,9 @@ int simulate(const Options& options, const Setup& setup, SceneWorld& world, cons
         world.stepFrame();
         stepSeconds += timer.seconds();
         stepsTaken = step;
-        for (const auto& body : world.bodies())
-            if (!finite(*body.rigidBody)) {
-                nonFinite = "body '" + body.name + "' became non-finite (NaN or Inf) at step " +
-                            std::to_string(step) + " (t = " + format("%.6g", world.time()) + " s)";
-                break;
-            }
+        if (const SceneWorld::Body* body = world.firstNonFiniteBody())
+            nonFinite = "body '" + body->name + "' became non-finite (NaN or Inf) at step " +
+                        std::to_string(step) + " (t = " + format("%.6g", world.time()) + " s)";
         tally();
         if (!nonFinite.empty()) break;
         output(step);

@@ -286,12 +286,6 @@ Json impactSummary(const ImpactRecorder& impacts) {
     return j;
 }
 
-bool finite(const btRigidBody& body) {
-    const btTransform& t = body.getWorldTransform();
-    const btVector3 p = t.getOrigin(), v = body.getLinearVelocity(), w = body.getAngularVelocity();
-    return std::isfinite(p.x() + p.y() + p.z() + v.x() + v.y() + v.z() + w.x() + w.y() + w.z());
-}
-
 // The child: one run into `dir` (already cleared by the parent). Writes run.json last.
 int runOne(const Options& options, const SweepSpec& spec, int index) {
     Timer total;
@@ -329,10 +323,9 @@ int runOne(const Options& options, const SweepSpec& spec, int index) {
             world.stepFrame();
             stepSeconds += timer.seconds();
             outcome.stepsTaken = step;
-            for (const auto& body : world.bodies())
-                if (!finite(*body.rigidBody) && outcome.error.empty())
-                    outcome.error = "body '" + body.name + "' became non-finite (NaN or Inf) at step " +
-                                    std::to_string(step);
+            if (const SceneWorld::Body* body = world.firstNonFiniteBody())
+                outcome.error = "body '" + body->name + "' became non-finite (NaN or Inf) at step " +
+                                std::to_string(step);
             if (!outcome.error.empty()) break;
         }
         fractureWorld.finishEnergyAudits();

@@ -54,6 +54,17 @@ TEST(SceneWorld, FreeFallMatchesAnalyticBeforeContact) {
     EXPECT_NEAR(position(ball).x(), 0.0, 1e-12);  // no sideways drift
 }
 
+TEST(SceneWorld, FirstNonFiniteBodyNamesTheBodyWithNaNState) {
+    SceneWorld world(sceneOf(R"({"bodies": [{"name": "ground", "shape": {"type": "plane"}},
+        {"name": "a", "shape": {"type": "sphere", "radius": 0.1}, "position": [0, 1, 0]},
+        {"name": "b", "shape": {"type": "sphere", "radius": 0.1}, "position": [1, 1, 0]}]})"));
+    world.stepFrame();
+    EXPECT_EQ(world.firstNonFiniteBody(), nullptr);
+    world.bodies()[2].rigidBody->setAngularVelocity(btVector3(0, std::nan(""), 0));
+    ASSERT_NE(world.firstNonFiniteBody(), nullptr);
+    EXPECT_EQ(world.firstNonFiniteBody()->name, "b");
+}
+
 // A box dropped onto the ground comes to rest with its centre at its half extent. Bullet's box
 // keeps its margin inside the half extents, so the only error is resting penetration, a small
 // fraction of the 0.04 m contact margin: asserted to 1 mm (measured: below 1e-6 m).
