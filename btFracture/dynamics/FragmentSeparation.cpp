@@ -139,7 +139,7 @@ bool containWithin(SeparationBody& body, const std::vector<ConvexPolytope>& cont
             // Pieces that reach past a face by less than a tenth of the margin (the shapes' single-
             // precision rounding is of that order) are left alone.
             if (extentAlong(cut, unit)[1] <= offset + tolerance) continue;
-            cut = clipConvexPolytope(cut, unit, offset);
+            cut = clipConvexPolytope(cut, unit, offset).polytope;
             if (cut.points.size() < 4) break;
         }
         if (cut.points.size() < 4 || cut.points == piece.points) continue;
@@ -153,10 +153,13 @@ TrimResult trimOverlaps(std::vector<SeparationBody>& bodies, const TrimOptions& 
     const std::size_t n = bodies.size();
     TrimResult result;
     result.changed.assign(n, 0);
-    std::vector<std::vector<double>> floor(n);  // smallest hull volume each piece may be cut to
+    std::vector<std::vector<double>> volume(n);  // each piece's hull volume now
+    std::vector<std::vector<double>> floor(n);   // smallest hull volume each piece may be cut to
     for (std::size_t i = 0; i < n; ++i)
-        for (const ConvexPolytope& piece : bodies[i].pieces)
-            floor[i].push_back(options.keepVolumeFraction * hullVolume(piece));
+        for (const ConvexPolytope& piece : bodies[i].pieces) {
+            volume[i].push_back(hullVolume(piece));
+            floor[i].push_back(options.keepVolumeFraction * volume[i].back());
+        }
     for (int sweep = 0; sweep < options.maxSweeps; ++sweep) {
         bool cut = false;
         result.declined = 0;
@@ -184,15 +187,19 @@ TrimResult trimOverlaps(std::vector<SeparationBody>& bodies, const TrimOptions& 
                         if (mi > options.heavyRatio * mj) shareA = 0.0;
                         if (mj > options.heavyRatio * mi) shareA = 1.0;
                         const double c = ea[1] - shareA * overlap;
-                        ConvexPolytope cutA = shareA > 0.0 ? clipConvexPolytope(a, d, c) : a;
-                        ConvexPolytope cutB = shareA < 1.0 ? clipConvexPolytope(b, -d, -c) : b;
-                        if (hullVolume(cutA) < floor[i][pa] || hullVolume(cutB) < floor[j][pb] ||
-                            cutA.points.size() < 4 || cutB.points.size() < 4) {
+                        ClippedPolytope cutA = shareA > 0.0 ? clipConvexPolytope(a, d, c)
+                                                            : ClippedPolytope{a, volume[i][pa]};
+                        ClippedPolytope cutB = shareA < 1.0 ? clipConvexPolytope(b, -d, -c)
+                                                            : ClippedPolytope{b, volume[j][pb]};
+                        if (cutA.volume < floor[i][pa] || cutB.volume < floor[j][pb] ||
+                            cutA.polytope.points.size() < 4 || cutB.polytope.points.size() < 4) {
                             ++result.declined;
                             continue;
                         }
-                        a = std::move(cutA);
-                        b = std::move(cutB);
+                        a = std::move(cutA.polytope);
+                        b = std::move(cutB.polytope);
+                        volume[i][pa] = cutA.volume;
+                        volume[j][pb] = cutB.volume;
                         result.changed[i] = result.changed[j] = 1;
                         ++result.cuts;
                         cut = true;

@@ -10,15 +10,26 @@
 #include <limits>
 
 namespace btfracture {
+namespace {
 
-ConvexPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::Vector3d& normal, double offset) {
-    ConvexPolytope out;
+double closedMeshVolume(const TriangleMesh& mesh) {
+    double six = 0.0;
+    for (const auto& t : mesh.triangles)
+        six += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]]));
+    return six / 6.0;
+}
+
+}  // namespace
+
+ClippedPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::Vector3d& normal, double offset) {
+    ClippedPolytope clipped;
+    ConvexPolytope& out = clipped.polytope;
     out.margin = polytope.margin;
     TriangleMesh hull;
     try {
         hull = convexHullMesh(polytope.points, "convex piece");
     } catch (const Error&) {
-        return out;  // flat: nothing with volume to cut
+        return clipped;  // flat: nothing with volume to cut
     }
     const double limit = offset - polytope.margin;
     std::vector<char> kept(hull.vertices.size());
@@ -28,10 +39,11 @@ ConvexPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::V
     }
     const std::size_t keptCount = out.points.size();
     if (keptCount == hull.vertices.size()) {
+        clipped.volume = closedMeshVolume(hull);
         out.points = std::move(hull.vertices);  // nothing cut: the corners
-        return out;
+        return clipped;
     }
-    if (keptCount == 0) return out;
+    if (keptCount == 0) return clipped;
     // Each hull edge from a kept corner p to a cut one q (a closed mesh has each edge once in
     // that direction) crosses the plane once.
     for (const auto& t : hull.triangles)
@@ -44,20 +56,18 @@ ConvexPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::V
         }
     // Only the cut hull's corners matter.
     try {
-        out.points = convexHullMesh(out.points, "cut convex piece").vertices;
+        TriangleMesh cut = convexHullMesh(out.points, "cut convex piece");
+        clipped.volume = closedMeshVolume(cut);
+        out.points = std::move(cut.vertices);
     } catch (const Error&) {
         out.points.clear();  // flat: nothing with volume is left
     }
-    return out;
+    return clipped;
 }
 
 double hullVolume(const ConvexPolytope& polytope) {
     try {
-        const TriangleMesh hull = convexHullMesh(polytope.points, "convex piece");
-        double six = 0.0;
-        for (const auto& t : hull.triangles)
-            six += hull.vertices[t[0]].dot(hull.vertices[t[1]].cross(hull.vertices[t[2]]));
-        return six / 6.0;
+        return closedMeshVolume(convexHullMesh(polytope.points, "convex piece"));
     } catch (const Error&) {
         return 0.0;
     }

@@ -4,6 +4,7 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/MeshCheck.h>
+#include <btFracture/geometry/ConvexClip.h>
 #include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/geometry/ConvexPenetration.h>
 #include <btFracture/geometry/HullSimplification.h>
@@ -209,6 +210,28 @@ TEST(ConvexPenetration, SeparatedHullsDoNotOverlap) {
     const Penetration c = convexPenetration(placed(unit, Eigen::Isometry3d::Identity()), placed(unit, poseB));
     EXPECT_FALSE(c.overlapping);
     EXPECT_EQ(c.depth, 0.0);
+}
+
+TEST(ConvexClip, CutBoxKeepsItsPartAndReportsItsVolume) {
+    // The unit box cut by the plane x + y = 0.5 (margin 0): the prism below it keeps
+    // 1 - (0.5^2 / 2) of the volume; along x alone at 0.25, three quarters.
+    ConvexPolytope box{boxCorners({0.5, 0.5, 0.5}), 0.0};
+    const Eigen::Vector3d diagonal = Eigen::Vector3d(1.0, 1.0, 0.0).normalized();
+    const ClippedPolytope corner = clipConvexPolytope(box, diagonal, 0.5 / std::sqrt(2.0));
+    EXPECT_NEAR(corner.volume, 1.0 - 0.125, 1e-12);
+    EXPECT_NEAR(hullVolume(corner.polytope), corner.volume, 1e-12);
+    const ClippedPolytope slab = clipConvexPolytope(box, Eigen::Vector3d::UnitX(), 0.25);
+    EXPECT_NEAR(slab.volume, 0.75, 1e-12);
+    EXPECT_NEAR(extentAlong(slab.polytope, Eigen::Vector3d::UnitX())[1], 0.25, 1e-12);
+    // A plane past the box keeps it whole; one before it leaves nothing.
+    EXPECT_NEAR(clipConvexPolytope(box, Eigen::Vector3d::UnitX(), 2.0).volume, 1.0, 1e-12);
+    const ClippedPolytope none = clipConvexPolytope(box, Eigen::Vector3d::UnitX(), -2.0);
+    EXPECT_TRUE(none.polytope.points.empty());
+    EXPECT_EQ(none.volume, 0.0);
+    // With a margin the surface, not the points, stops at the plane.
+    box.margin = 0.1;
+    EXPECT_NEAR(extentAlong(clipConvexPolytope(box, Eigen::Vector3d::UnitX(), 0.25).polytope,
+                            Eigen::Vector3d::UnitX())[1], 0.25, 1e-12);
 }
 
 }  // namespace
