@@ -8,7 +8,7 @@
 //   [--verbose]
 // --smoke: penny, inclined penny and the mode-I growth test, FULL and EST only; exits non-zero when EST's
 // mode-I SIF error exceeds 15 % or FULL's penny K_I is off by more than 3 %.
-#include "IsolatedRun.h"
+#include "IsolatedRun.h"  // bench/
 #include "Report.h"
 #include "SceneCases.h"
 #include "SolverCases.h"
@@ -50,6 +50,25 @@ void print(const RunResult& r) {
     std::fflush(stdout);
 }
 
+// `run` in a child process (IsolatedRun.h); its result with the child's peak memory, or a result
+// whose note says why the run failed.
+RunResult runInChild(const std::function<RunResult()>& run, const std::string& caseName,
+                     const std::string& method) {
+    const btfracture::IsolatedRun child = btfracture::runIsolated([&] { return serialize(run()); });
+    RunResult r;
+    if (child.ok) {
+        r = deserialize(child.text);
+    } else {
+        std::fprintf(stderr, "accuracy: %s / %s failed: %s\n", caseName.c_str(), method.c_str(),
+                     child.failure.c_str());
+        r.caseName = caseName;
+        r.method = method;
+        r.note = "run failed (" + child.failure + ")";
+    }
+    r.peakMegabytes = child.peakMegabytes;
+    return r;
+}
+
 // FULL first (the reference), then EST, then the three HYBRID thresholds when `grows`.
 std::string methodFilter;  // --methods: run only these (FULL is still the reference when run)
 
@@ -58,7 +77,7 @@ std::vector<RunResult> runMethods(const std::string& name, bool grows, int surfa
     std::vector<RunResult> out;
     auto go = [&](const MethodChoice& m) {
         if (!selected(methodFilter, m.label)) return;
-        out.push_back(runIsolated([&] { return run(m); }, name, m.label));
+        out.push_back(runInChild([&] { return run(m); }, name, m.label));
         std::printf("  %s %s done\n", name.c_str(), m.label.c_str());
         std::fflush(stdout);
     };

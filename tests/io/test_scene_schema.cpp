@@ -57,6 +57,21 @@ TEST(SceneSchema, EveryShippedSceneValidatesAndNamesTheSchema) {
     }
 }
 
+// The benchmarks' scenes (bench/scenes) are scene files as users write them: they parse and
+// validate too, so that a change of the format cannot break `make bench` unnoticed.
+TEST(SceneSchema, BenchmarkScenesParseAndValidate) {
+    const test::JsonSchema schema = sceneSchema();
+    const std::vector<fs::path> scenes = jsonFiles(std::string(BTFRACTURE_MESH_DIR) + "/../../bench/scenes");
+    ASSERT_GE(scenes.size(), 1u);
+    for (const fs::path& file : scenes) {
+        const Json scene = Json::parse(readWholeFile(file.string(), "scene"));
+        EXPECT_EQ(scene.value("$schema", ""), "../../demos/scenes/scene.schema.json") << file;
+        const std::vector<std::string> problems = schema.validate(scene);
+        EXPECT_TRUE(problems.empty()) << file << joined(problems);
+        EXPECT_NO_THROW(readSceneFile(file.string())) << file;
+    }
+}
+
 // Scenes that exercise every key: the schema accepts what the parser accepts.
 TEST(SceneSchema, EveryFeatureSceneValidates) {
     const test::JsonSchema schema = sceneSchema();
