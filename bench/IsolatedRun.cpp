@@ -59,7 +59,8 @@ IsolatedRun runIsolated(const std::function<std::string()>& run, double memoryLi
     close(fds[1]);
     std::string text;
     char buffer[65536];
-    for (ssize_t n; (n = read(fds[0], buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<std::size_t>(n));
+    for (ssize_t n; (n = read(fds[0], buffer, sizeof buffer)) > 0;)
+        text.append(buffer, static_cast<std::size_t>(n));
     close(fds[0]);
     int status = 0;
     struct rusage usage {};

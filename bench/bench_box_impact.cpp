@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Zlib
 // Large crack systems in a rigid-body scene: bench/scenes/box_impact.json (a free 1 m PMMA-like
-// box hit by a 650 kg ball of radius 0.25 m at 20 m/s, 60 steps of 4 ms) at 500 and 1,500 BEM triangles, with FULL,
-// EST and HYBRID (switching at 2,000 BEM elements). Each run is a child process (IsolatedRun.h),
-// so its peak memory is its own, under an address-space limit so that a run which grows too large
-// fails alone. Per run: the fracture events (engine calls that returned fragments), the wall time
-// of each event's FractureEngine::fracture() call (FractureEventInfo::engineSeconds), the crack
-// triangles in the parent's BEM after each event, and the engine calls that broke nothing.
+// box hit by a 650 kg ball of radius 0.25 m at 20 m/s, 60 steps of 4 ms) at 500 and 1,500 BEM triangles, with
+// FULL, EST and HYBRID (switching at 2,000 BEM elements). Each run is a child process (IsolatedRun.h), so its
+// peak memory is its own, under an address-space limit so that a run which grows too large fails alone. Per
+// run: the fracture events (engine calls that returned fragments), the wall time of each event's
+// FractureEngine::fracture() call (FractureEventInfo::engineSeconds), the crack triangles in the parent's BEM
+// after each event, and the engine calls that broke nothing.
 //   bench_box_impact [--quick] [--triangles 500,1500] [--methods full,est,hybrid] [--memory-limit MB]
 // --quick: 500 triangles only (a few minutes; all six runs take 5-20 minutes on 2 cores).
 #include "IsolatedRun.h"
@@ -37,21 +37,22 @@ struct Event {
     double engineSeconds = 0.0;  // wall time of the FractureEngine::fracture() call that broke the body
     int crackTriangles = 0;      // crack triangles in the parent's BEM after the event
     int fragments = 0;
-    EngineTimings timings;       // the engine's split of engineSeconds
+    EngineTimings timings;  // the engine's split of engineSeconds
 };
 
 struct BoxRun {
     std::vector<Event> events;
-    int idleCalls = 0;           // engine calls that returned no fragments
-    double idleSeconds = 0.0;    // wall time of the frames with such calls and no event
-    double wallSeconds = 0.0;    // all 60 frames
+    int idleCalls = 0;         // engine calls that returned no fragments
+    double idleSeconds = 0.0;  // wall time of the frames with such calls and no event
+    double wallSeconds = 0.0;  // all 60 frames
 };
 
 struct EventLog : FractureListener {
     std::vector<Event> events;
     void onFractureEvent(btFractureRigidBody&, const std::vector<btFractureRigidBody*>& pieces,
                          const FractureEventInfo& info) override {
-        events.push_back({info.engineSeconds, info.crackTriangles, static_cast<int>(pieces.size()), info.engineTimings});
+        events.push_back(
+            {info.engineSeconds, info.crackTriangles, static_cast<int>(pieces.size()), info.engineTimings});
     }
 };
 
@@ -60,8 +61,8 @@ std::string serialize(const BoxRun& r) {
     out.precision(17);
     out << "idle " << r.idleCalls << ' ' << r.idleSeconds << "\nwall " << r.wallSeconds << '\n';
     for (const Event& e : r.events)
-        out << "event " << e.engineSeconds << ' ' << e.crackTriangles << ' ' << e.fragments << ' ' << e.timings.bem
-            << ' ' << e.timings.fracture << ' ' << e.timings.geometry << '\n';
+        out << "event " << e.engineSeconds << ' ' << e.crackTriangles << ' ' << e.fragments << ' '
+            << e.timings.bem << ' ' << e.timings.fracture << ' ' << e.timings.geometry << '\n';
     return out.str();
 }
 
@@ -146,7 +147,8 @@ std::vector<std::string> split(const std::string& list) {
 
 int main(int argc, char** argv) {
     std::vector<int> sizes{500, 1500};
-    std::vector<FractureMethod> methods{FractureMethod::Full, FractureMethod::Estimated, FractureMethod::Hybrid};
+    std::vector<FractureMethod> methods{FractureMethod::Full, FractureMethod::Estimated,
+                                        FractureMethod::Hybrid};
     double memoryLimit = 6144.0;  // [MB] per run; FULL at 1,500 triangles needs a few GB
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -161,7 +163,8 @@ int main(int argc, char** argv) {
             for (const std::string& s : split(value())) {
                 char* end = nullptr;
                 const long n = std::strtol(s.c_str(), &end, 10);
-                if (*end != '\0' || n < 4 || n > 1000000) usage("--triangles: '" + s + "' is not a triangle count >= 4");
+                if (*end != '\0' || n < 4 || n > 1000000)
+                    usage("--triangles: '" + s + "' is not a triangle count >= 4");
                 sizes.push_back(static_cast<int>(n));
             }
             if (sizes.empty()) usage("--triangles: empty list");
@@ -179,7 +182,8 @@ int main(int argc, char** argv) {
             const std::string s = value();
             char* end = nullptr;
             memoryLimit = std::strtod(s.c_str(), &end);
-            if (*end != '\0' || !(memoryLimit > 0.0)) usage("--memory-limit: '" + s + "' is not a positive number of MB");
+            if (*end != '\0' || !(memoryLimit > 0.0))
+                usage("--memory-limit: '" + s + "' is not a positive number of MB");
         } else {
             usage("unknown argument '" + arg + "'");
         }
@@ -190,17 +194,18 @@ int main(int argc, char** argv) {
     // engine_s sums every engine call, wall_s all 60 frames; cpu_s is the run's CPU time (all
     // threads), which a shared machine does not inflate the way it inflates wall times.
     std::printf("%6s %-6s %6s %6s %8s %8s %8s %8s %9s %11s %9s %8s %9s %8s %8s\n", "tris", "method", "events",
-                "calls", "first_s", "bem_s", "crack_s", "geom_s", "median_s", "crack_tris", "frags_1st", "peak_MB",
-                "engine_s", "wall_s", "cpu_s");
+                "calls", "first_s", "bem_s", "crack_s", "geom_s", "median_s", "crack_tris", "frags_1st",
+                "peak_MB", "engine_s", "wall_s", "cpu_s");
     bool failed = false;
     for (int tris : sizes) {
         for (FractureMethod method : methods) {
-            const IsolatedRun child = runIsolated([&] { return serialize(runBox(tris, method)); }, memoryLimit);
+            const IsolatedRun child =
+                runIsolated([&] { return serialize(runBox(tris, method)); }, memoryLimit);
             const std::string name = "box_" + std::to_string(tris) + "_" + toString(method);
             if (!child.ok) {
                 failed = true;
-                std::printf("%6d %-6s FAILED after %.0f MB peak: %s\n", tris, toString(method), child.peakMegabytes,
-                            child.failure.c_str());
+                std::printf("%6d %-6s FAILED after %.0f MB peak: %s\n", tris, toString(method),
+                            child.peakMegabytes, child.failure.c_str());
                 continue;
             }
             const BoxRun r = deserialize(child.text);
@@ -218,8 +223,8 @@ int main(int argc, char** argv) {
             const double med = events > 0 ? median(seconds) : 0.0;
             const std::string crack = std::to_string(crackMin) + "-" + std::to_string(crackMax);
             const Event firstEvent = events > 0 ? r.events.front() : Event{};
-            std::printf("%6d %-6s %6d %6d %8.2f %8.2f %8.2f %8.2f %9.2f %11s %9d %8.0f %9.2f %8.2f %8.2f\n", tris,
-                        toString(method), events, events + r.idleCalls, first, firstEvent.timings.bem,
+            std::printf("%6d %-6s %6d %6d %8.2f %8.2f %8.2f %8.2f %9.2f %11s %9d %8.0f %9.2f %8.2f %8.2f\n",
+                        tris, toString(method), events, events + r.idleCalls, first, firstEvent.timings.bem,
                         firstEvent.timings.fracture, firstEvent.timings.geometry, med, crack.c_str(),
                         firstEvent.fragments, child.peakMegabytes, engine, r.wallSeconds, child.cpuSeconds);
             std::printf("METRIC %s_events %d count\n", name.c_str(), events);

@@ -53,7 +53,8 @@ TEST(SceneSchema, EveryShippedSceneValidatesAndNamesTheSchema) {
         const Json scene = Json::parse(readWholeFile(file.string(), "scene"));
         EXPECT_EQ(scene.value("$schema", ""), "scene.schema.json") << file;  // editors find the schema
         const std::vector<std::string> problems = schema.validate(scene);
-        EXPECT_TRUE(problems.empty()) << file << joined(problems);  // the parser: SceneFile.ShippedScenesParse
+        EXPECT_TRUE(problems.empty())
+            << file << joined(problems);  // the parser: SceneFile.ShippedScenesParse
     }
 }
 
