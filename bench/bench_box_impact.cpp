@@ -7,7 +7,7 @@
 // FractureEngine::fracture() call (FractureEventInfo::engineSeconds), the crack triangles in the parent's BEM
 // after each event, and the engine calls that broke nothing.
 //   bench_box_impact [--quick] [--triangles 500,1500] [--methods full,est,hybrid] [--memory-limit MB]
-// --quick: 500 triangles only (a few minutes; all six runs take 5-20 minutes on 2 cores).
+// --quick: 500 triangles only (about a minute; all six runs 11-20 minutes on 2 cores).
 #include "IsolatedRun.h"
 
 #include <btFracture/core/Error.h>
