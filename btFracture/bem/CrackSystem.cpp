@@ -146,12 +146,17 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
     return out;
 }
 
-CrackSystem::CrackSystem(const ElasticSolver& solver, CrackMesh& cracks) : solver_(solver), cracks_(cracks) {
+CrackSystem::CrackSystem(const ElasticSolver& solver, CrackMesh& cracks, Blocks blocks)
+    : solver_(solver), cracks_(cracks), blocks_(blocks) {
     const int n3 = 3 * solver.mesh().nodeCount(), m3 = 3 * solver.mesh().triangleCount();
     C_.resize(n3, 0);
-    H_.resize(n3, 0);
     G_.resize(0, m3);
     D_.resize(0, 0);
+}
+
+const Eigen::MatrixXd& CrackSystem::crackCrackBlock() const {
+    if (blocks_ != Blocks::Keep) throw Error("CrackSystem: D is folded into the factor (construct with Blocks::Keep)");
+    return D_;
 }
 
 int CrackSystem::update() {
@@ -160,21 +165,13 @@ int CrackSystem::update() {
     if (total == assembledUnknowns_) return 0;
     std::vector<int> fresh(total - assembledUnknowns_);
     for (int i = 0; i < static_cast<int>(fresh.size()); ++i) fresh[i] = assembledUnknowns_ + i;
+    const int old3 = 3 * assembledUnknowns_, new3 = 3 * total, added = new3 - old3;
 
-    // Surface-crack coupling for the new unknowns: new columns of C and H, new rows of G.
+    // Surface-crack coupling for the new unknowns: new columns of C, new rows of G.
     const CrackSurfaceCoupling coupling = assembleCrackSurfaceCoupling(solver_, cracks_, fresh);
-    const int old3 = 3 * assembledUnknowns_, new3 = 3 * total;
-    C_.conservativeResize(Eigen::NoChange, new3);
-    C_.rightCols(new3 - old3) = coupling.C;
-    H_.conservativeResize(Eigen::NoChange, new3);
-    H_.rightCols(new3 - old3) = solver_.solveRegularised(transposedProduct(solver_.stiffness(), coupling.C));
-    G_.conservativeResize(new3, Eigen::NoChange);
-    G_.bottomRows(new3 - old3) = coupling.G;
 
-    // Crack-crack block: entries (k, l) with k or l new; old-old entries keep their values.
-    D_.conservativeResize(new3, new3);
-    D_.rightCols(new3 - old3).setZero();
-    D_.bottomRows(new3 - old3).setZero();
+    // Crack-crack block D in the new unknowns' columns (their rows follow by symmetry).
+    Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(new3, added);
     const double mu = solver_.material().shearModulus(), nu = solver_.material().poissonRatio();
     const QuadratureSettings& q = solver_.settings().quadrature;
     std::vector<int> all(total);
@@ -184,7 +181,8 @@ int CrackSystem::update() {
     auto touchesFresh = [&](const BasisElement& e) {
         return std::any_of(e.unknown.begin(), e.unknown.end(), [&](int k) { return k >= first; });
     };
-    // Each unordered pair once (bit-exact symmetry of D); its block and the transposed block.
+    // Each unordered pair once (bit-exact symmetry of D); its block and the transposed block,
+    // each entry kept where its column is a new unknown.
     auto addBlock = [&](const BasisElement& x, const BasisElement& y, const PairCoefficients& coeff,
                         bool transposed) {
         for (int b = 0; b < 3; ++b) {
@@ -195,13 +193,13 @@ int CrackSystem::update() {
             symTimesCross(coeff.L, d.data(), P);
             for (int a = 0; a < 3; ++a) {
                 const int k = x.unknown[a];
-                if (k < 0 || (k < first && l < first)) continue;
+                if (k < 0 || (transposed ? k : l) < first) continue;
                 addStiffnessBlock(x.curl[a].data(), d.data(), P, mu * coeff.a, 1.0,
                                   [&](int i, int j, double v) {
                                       if (transposed)
-                                          D_(3 * l + j, 3 * k + i) += v;
+                                          columns(3 * l + j, 3 * (k - first) + i) += v;
                                       else
-                                          D_(3 * k + i, 3 * l + j) += v;
+                                          columns(3 * k + i, 3 * (l - first) + j) += v;
                                   });
             }
         }
@@ -222,13 +220,28 @@ int CrackSystem::update() {
         addBlock(elements[x], elements[y], coeffs[i], false);
         if (y != x) addBlock(elements[x], elements[y], coeffs[i], true);
     }
+    Eigen::MatrixXd newD;
+    if (blocks_ == Blocks::Keep) newD = columns;
 
-    // Schur complement: C, H and D keep their old columns, so old-old entries keep their values.
-    const int added = new3 - old3;
-    schur_.conservativeResize(new3, new3);
-    schur_.rightCols(added) = D_.rightCols(added) - transposedProduct(C_, H_.rightCols(added));
-    schur_.bottomLeftCorner(added, old3) =
-        D_.bottomLeftCorner(added, old3) - transposedProduct(C_.rightCols(added), H_.leftCols(old3));
+    // Schur complement columns S(:, new) = D(:, new) - C^T K_R^-1 K^T C_new; the new rows are
+    // their transpose (the upper triangle of S is factored).
+    const Eigen::MatrixXd H = regularisedLoadSolve(coupling.C);
+    if (old3 > 0) columns.topRows(old3) -= transposedProduct(C_, H);
+    columns.bottomRows(added) -= transposedProduct(coupling.C, H);
+    if (!schur_.extend(columns, 1e-15))
+        throw Error("crack system: the Schur complement of " + std::to_string(total) +
+                    " crack unknowns is not positive definite; the crack mesh is probably degenerate "
+                    "(slivers, overlapping sheets)");
+
+    C_.conservativeResize(Eigen::NoChange, new3);
+    C_.rightCols(added) = coupling.C;
+    G_.conservativeResize(new3, Eigen::NoChange);
+    G_.bottomRows(added) = coupling.G.cast<float>();
+    if (blocks_ == Blocks::Keep) {
+        D_.conservativeResize(new3, new3);
+        D_.rightCols(added) = newD;
+        D_.bottomLeftCorner(added, old3) = newD.topRows(old3).transpose();
+    }
     assembledUnknowns_ = total;
     return static_cast<int>(fresh.size());
 }
@@ -241,18 +254,16 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {
         s.openings.resize(0);
         return s;
     }
-    const Eigen::VectorXd rhs = G_ * q - C_.transpose() * b;
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(schur_);
-    s.openings = lu.solve(rhs);
-    const double residual = (schur_ * s.openings - rhs).norm() / std::max(rhs.norm(), 1e-300);
-    if (!s.openings.allFinite() || residual > 1e-8)
-        throw Error("crack system: Schur complement solve failed (relative residual " +
-                    std::to_string(residual) + "); the crack mesh is probably degenerate");
-    s.displacements = b - H_ * s.openings;
+    s.openings = loadOnCracks(q) - C_.transpose() * b;
+    schur_.solveInPlace(s.openings);
+    if (!s.openings.allFinite())
+        throw Error("crack system: the Schur complement solve gave NaN or Inf; the crack mesh is probably degenerate");
+    s.displacements = b - regularisedLoadSolve(C_ * s.openings);
     return s;
 }
 
 CrackSystem::Solution CrackSystem::solveMonolithic(const Eigen::VectorXd& q) const {
+    const Eigen::MatrixXd& D = crackCrackBlock();
     const Eigen::MatrixXd& K = solver_.stiffness();
     const int n3 = static_cast<int>(K.rows()), k3 = 3 * assembledUnknowns_;
     const Eigen::MatrixXd& T = solver_.regulariser();
@@ -260,12 +271,30 @@ CrackSystem::Solution CrackSystem::solveMonolithic(const Eigen::VectorXd& q) con
     A.topLeftCorner(n3, n3) = K.transpose() * K + solver_.regularisationWeight() * T.transpose() * T;
     A.topRightCorner(n3, k3) = K.transpose() * C_;
     A.bottomLeftCorner(k3, n3) = C_.transpose();
-    A.bottomRightCorner(k3, k3) = D_;
+    A.bottomRightCorner(k3, k3) = D;
     Eigen::VectorXd rhs(n3 + k3);
     rhs.head(n3) = K.transpose() * (solver_.operators().tractionToLoad * q);
-    rhs.tail(k3) = G_ * q;
+    rhs.tail(k3) = loadOnCracks(q);
     const Eigen::VectorXd x = A.partialPivLu().solve(rhs);
     return {x.head(n3), x.tail(k3)};
+}
+
+Eigen::MatrixXd CrackSystem::regularisedLoadSolve(const Eigen::MatrixXd& b) const {
+    return solver_.solveRegularised(transposedProduct(solver_.stiffness(), b));
+}
+
+Eigen::VectorXd CrackSystem::loadOnCracks(const Eigen::VectorXd& q) const {
+    constexpr int kRows = 64;
+    Eigen::VectorXd out(G_.rows());
+    for (Eigen::Index r = 0; r < G_.rows(); r += kRows) {
+        const Eigen::Index h = std::min<Eigen::Index>(kRows, G_.rows() - r);
+        out.segment(r, h).noalias() = G_.middleRows(r, h).cast<double>() * q;
+    }
+    return out;
+}
+
+std::size_t CrackSystem::matrixBytes() const {
+    return sizeof(double) * (C_.size() + D_.size()) + sizeof(float) * G_.size() + schur_.bytes();
 }
 
 Eigen::VectorXd CrackSystem::nodalOpenings(const Solution& s) const {

@@ -7,9 +7,12 @@
 //   [ C^T    D     ] [ cod ] = [ G q     ]
 // C couples surface and crack hats, D crack hats with each other (appendix Eq. 8), G q is the
 // traction that the surface loads q induce on the crack faces through the adjoint double layer
-// (zero only for cracks far from any loaded surface). Blocks, and the Schur complement
-// S = D - C^T H, are extended incrementally: when a crack grows, only the rows and columns of the
-// new unknowns are computed.
+// (zero only for cracks far from any loaded surface). S = D - C^T K_R^-1 K^T C is symmetric
+// positive definite up to rounding (and up to the rigid modes' residue in K, 1e-6 of S near
+// crack mouths) and is factored by Cholesky as symmetric, from its columns S(:, new) = D(:, new) -
+// C^T K_R^-1 K^T C_new. When a crack grows, only the new unknowns' columns are computed and the
+// factor is extended by bordering (BorderedCholesky): D is folded into it and freed.
+#include <btFracture/bem/BorderedCholesky.h>
 #include <btFracture/bem/CrackMesh.h>
 #include <btFracture/bem/ElasticSolver.h>
 
@@ -19,16 +22,19 @@ namespace btfracture {
 
 class CrackSystem {
 public:
+    // Keep: D is kept besides the factor (for crackCrackBlock and solveMonolithic, in tests).
+    enum class Blocks { Fold, Keep };
     // Borrows `solver` and `cracks`, which must outlive this object. Unknowns the crack mesh
     // already has are assembled by the first update().
-    CrackSystem(const ElasticSolver& solver, CrackMesh& cracks);
+    CrackSystem(const ElasticSolver& solver, CrackMesh& cracks, Blocks blocks = Blocks::Fold);
 
     CrackMesh& cracks() { return cracks_; }
     const CrackMesh& cracks() const { return cracks_; }
     const ElasticSolver& solver() const { return solver_; }
 
     // Numbers the unknowns of nodes that left the front and assembles their rows and columns.
-    // Returns the number of new unknown nodes.
+    // Returns the number of new unknown nodes. Throws btfracture::Error, leaving the system as it
+    // was, when the grown Schur complement is not positive definite (a degenerate crack mesh).
     int update();
 
     struct Solution {
@@ -37,21 +43,28 @@ public:
     };
     // Schur complement solve (P0 tractions q, 3m [Pa], balanced).
     Solution solve(const Eigen::VectorXd& tractions) const;
-    // The same system factored as a whole (for tests; O((3n + 3k)^3)).
+    // The same system factored as a whole (Blocks::Keep only; O((3n + 3k)^3)).
     Solution solveMonolithic(const Eigen::VectorXd& tractions) const;
 
     // COD at every crack node (zero on the front), 3 x nodeCount.
     Eigen::VectorXd nodalOpenings(const Solution& s) const;
 
     const Eigen::MatrixXd& surfaceCrackBlock() const { return C_; }  // 3n x 3k
-    const Eigen::MatrixXd& crackCrackBlock() const { return D_; }    // 3k x 3k
-    const Eigen::MatrixXd& crackLoadBlock() const { return G_; }     // 3k x 3m
+    const Eigen::MatrixXd& crackCrackBlock() const;                  // 3k x 3k, Blocks::Keep only
+    // Bytes held by the crack blocks and the factor (the ElasticSolver's not included).
+    std::size_t matrixBytes() const;
 
 private:
     const ElasticSolver& solver_;
     CrackMesh& cracks_;
-    Eigen::MatrixXd C_, D_, G_, H_;  // H = K_R^-1 K^T C
-    Eigen::MatrixXd schur_;          // D - C^T H, 3k x 3k
+    const Blocks blocks_;
+    Eigen::MatrixXd C_, D_;
+    // Single precision (half the bytes of the largest block): G only forms the right-hand side
+    // G q, in double, so the rounding stays near 1e-7 of it.
+    Eigen::MatrixXf G_;
+    Eigen::VectorXd loadOnCracks(const Eigen::VectorXd& tractions) const;  // G q
+    Eigen::MatrixXd regularisedLoadSolve(const Eigen::MatrixXd& b) const;  // K_R^-1 K^T b
+    BorderedCholesky schur_;  // S = D - C^T K_R^-1 K^T C
     int assembledUnknowns_ = 0;
 };
 

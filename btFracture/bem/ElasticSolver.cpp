@@ -87,8 +87,16 @@ TractionResultant ElasticSolver::netLoad(const Eigen::VectorXd& q) const {
 }
 
 Eigen::MatrixXd ElasticSolver::solveRegularised(const Eigen::MatrixXd& rhs) const {
-    Eigen::MatrixXd x = factor_.triangularView<Eigen::Lower>().solve(rhs);
-    factor_.triangularView<Eigen::Lower>().transpose().solveInPlace(x);
+    // Column blocks of a fixed width on all cores: the same result on any thread count.
+    constexpr int kBlock = 16;
+    const int n = static_cast<int>(rhs.cols());
+    Eigen::MatrixXd x = rhs;
+#pragma omp parallel for schedule(dynamic, 1) if (n > kBlock)
+    for (int j0 = 0; j0 < n; j0 += kBlock) {
+        auto xs = x.middleCols(j0, std::min(kBlock, n - j0));
+        factor_.triangularView<Eigen::Lower>().solveInPlace(xs);
+        factor_.triangularView<Eigen::Lower>().transpose().solveInPlace(xs);
+    }
     return x;
 }
 

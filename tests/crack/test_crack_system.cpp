@@ -35,12 +35,12 @@ TEST(CrackSystem, SchurMatchesMonolithicAndIncrementalMatchesScratch) {
     // The same two-ring disc, once assembled from scratch and once grown: first only the
     // inner hexagon (one unknown, its centre), then the outer ring of triangles (six more).
     CrackMesh scratchCracks;
-    CrackSystem scratch(solver, scratchCracks);
+    CrackSystem scratch(solver, scratchCracks, CrackSystem::Blocks::Keep);
     addDiscCrack(scratch.cracks(), Eigen::Vector3d(0.02, -0.01, 0.03), Eigen::Vector3d(0.1, 0.2, 1.0), 0.1,
                  2);
     scratch.update();
     CrackMesh grownCracks;
-    CrackSystem grown(solver, grownCracks);
+    CrackSystem grown(solver, grownCracks, CrackSystem::Blocks::Keep);
     const CrackMesh& full = scratch.cracks();
     for (int i = 0; i < full.nodeCount(); ++i) grown.cracks().addNode(full.node(i));
     for (int t = 0; t < 6; ++t)

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: Zlib
+#include <btFracture/bem/BorderedCholesky.h>
+
+#include <btFracture/core/ParallelProduct.h>
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+
+namespace btfracture {
+
+bool BorderedCholesky::extend(const Eigen::Ref<const Eigen::MatrixXd>& columns, double minimumDiagonalRatio) {
+    const int h = static_cast<int>(columns.cols());
+    if (h == 0) return true;
+    Eigen::MatrixXd X = columns.topRows(size_);
+    forwardSubstitute(X);
+    Eigen::MatrixXd E = columns.bottomRows(h);
+    if (size_ > 0) E -= transposedProduct(X, X);
+    const Eigen::MatrixXd lower = E.triangularView<Eigen::Lower>();
+    E = lower + lower.transpose();
+    E.diagonal() *= 0.5;
+    Eigen::LLT<Eigen::MatrixXd> llt(E);
+    if (llt.info() != Eigen::Success) return false;
+    const Eigen::VectorXd d = llt.matrixLLT().diagonal();
+    if (!d.allFinite() || d.minCoeff() <= 0.0) return false;
+    const double lo = size_ == 0 ? d.minCoeff() : std::min(minDiagonal_, d.minCoeff());
+    const double hi = size_ == 0 ? d.maxCoeff() : std::max(maxDiagonal_, d.maxCoeff());
+    if ((lo / hi) * (lo / hi) < minimumDiagonalRatio) return false;
+    Panel panel{size_, Eigen::MatrixXd(h, size_ + h)};
+    panel.L.leftCols(size_) = X.transpose();
+    panel.L.rightCols(h) = llt.matrixL();
+    panels_.push_back(std::move(panel));
+    minDiagonal_ = lo;
+    maxDiagonal_ = hi;
+    size_ += h;
+    return true;
+}
+
+void BorderedCholesky::forwardSubstitute(Eigen::Ref<Eigen::MatrixXd> x) const {
+    // Column blocks of a fixed width are independent: the result is the same on any core count.
+    constexpr int kBlock = 32;
+    const int n = static_cast<int>(x.cols());
+#pragma omp parallel for schedule(dynamic, 1) if (n > kBlock)
+    for (int j0 = 0; j0 < n; j0 += kBlock) {
+        auto xs = x.middleCols(j0, std::min(kBlock, n - j0));
+        for (const Panel& p : panels_) {
+            const int h = static_cast<int>(p.L.rows());
+            if (p.row0 > 0) xs.middleRows(p.row0, h).noalias() -= p.L.leftCols(p.row0) * xs.topRows(p.row0);
+            p.L.rightCols(h).triangularView<Eigen::Lower>().solveInPlace(xs.middleRows(p.row0, h));
+        }
+    }
+}
+
+void BorderedCholesky::solveInPlace(Eigen::Ref<Eigen::VectorXd> x) const {
+    forwardSubstitute(x);
+    for (auto p = panels_.rbegin(); p != panels_.rend(); ++p) {
+        const int h = static_cast<int>(p->L.rows());
+        auto xp = x.segment(p->row0, h);
+        p->L.rightCols(h).triangularView<Eigen::Lower>().transpose().solveInPlace(xp);
+        if (p->row0 > 0) x.head(p->row0).noalias() -= p->L.leftCols(p->row0).transpose() * xp;
+    }
+}
+
+double BorderedCholesky::diagonalRatio() const {
+    return size_ == 0 ? 1.0 : (minDiagonal_ / maxDiagonal_) * (minDiagonal_ / maxDiagonal_);
+}
+
+std::size_t BorderedCholesky::bytes() const {
+    std::size_t out = 0;
+    for (const Panel& p : panels_) out += sizeof(double) * p.L.size();
+    return out;
+}
+
+}  // namespace btfracture
