@@ -546,7 +546,10 @@ TEST(StabilityMargin, RefractureChainTenPercentSlower) {
 
 // A curved fragment breaks again. The ball breaks a glass bunny; every piece starts a new
 // generation (as in the chain), so the largest one - curved, with crack faces - gets its BEM from
-// its level set, and the next ball, at twice the first ball's speed, breaks it.
+// its level set, and the next balls, at 2.5 times the first ball's speed, break it. Whether one
+// ball breaks the tumbling piece depends on where it lands, so five balls are allowed (with three
+// balls at 2-3 times the speed, 4 of 26 runs at 0.75-1.1 of the nominal speed left the piece
+// whole; with five at 2.5 times, none of 7).
 Case curvedFragment() {
     Case c;
     c.slabMesh = test::demoMesh("bunny.obj", 0.3);  // centred on its bounding box
@@ -556,9 +559,9 @@ Case curvedFragment() {
     c.settings.maxRefractureDepth = 1;
     c.settings.bemTriangleTarget = 500;
     c.fragments.keepParentSolverFraction = 1.0;
-    c.steps = 120;
-    c.chaseBalls = 3;
-    c.chaseSpeedScale = 2.0;
+    c.steps = 160;
+    c.chaseBalls = 5;
+    c.chaseSpeedScale = 2.5;
     c.projectiles[0].position = Eigen::Vector3d(0.0, 2.0 * c.slabHalf.y() + 0.06, 0.0);
     return c;
 }
