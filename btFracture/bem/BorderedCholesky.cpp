@@ -66,6 +66,12 @@ double BorderedCholesky::diagonalRatio() const {
     return size_ == 0 ? 1.0 : (minDiagonal_ / maxDiagonal_) * (minDiagonal_ / maxDiagonal_);
 }
 
+Eigen::MatrixXd BorderedCholesky::product() const {
+    Eigen::MatrixXd L = Eigen::MatrixXd::Zero(size_, size_);
+    for (const Panel& p : panels_) L.block(p.row0, 0, p.L.rows(), p.L.cols()) = p.L;
+    return transposedProduct(L.transpose(), L.transpose());
+}
+
 std::size_t BorderedCholesky::bytes() const {
     std::size_t out = 0;
     for (const Panel& p : panels_) out += sizeof(double) * p.L.size();

@@ -32,6 +32,8 @@ public:
     // (min_i L_ii / max_i L_ii)^2, an upper bound on S's reciprocal condition number (each L_ii^2
     // lies between S's extreme eigenvalues); 1 while empty.
     double diagonalRatio() const;
+    // S = L L^T as a dense matrix (size() x size()).
+    Eigen::MatrixXd product() const;
     std::size_t bytes() const;
 
 private:

@@ -4,6 +4,7 @@
 #include <btFracture/bem/BoundaryOperators.h>
 #include <btFracture/bem/GalerkinBlocks.h>
 #include <btFracture/core/Error.h>
+#include <btFracture/core/Log.h>
 #include <btFracture/core/ParallelProduct.h>
 
 #include <Eigen/LU>
@@ -228,10 +229,26 @@ int CrackSystem::update() {
     const Eigen::MatrixXd H = regularisedLoadSolve(coupling.C);
     if (old3 > 0) columns.topRows(old3) -= transposedProduct(C_, H);
     columns.bottomRows(added) -= transposedProduct(coupling.C, H);
-    if (!schur_.extend(columns, 1e-15))
-        throw Error("crack system: the Schur complement of " + std::to_string(total) +
-                    " crack unknowns is not positive definite; the crack mesh is probably degenerate "
-                    "(slivers, overlapping sheets)");
+    bool dense = denseSchur_.size() > 0;
+    if (!dense && !schur_.extend(columns, 1e-15)) {
+        logf(LogLevel::Info, "crack system: the Schur complement of ", total,
+             " crack unknowns is not positive definite; factored by LU from here on");
+        dense = true;
+    }
+    if (dense) {
+        Eigen::MatrixXd grown(new3, new3);
+        grown.topLeftCorner(old3, old3) = denseSchur_.size() > 0 ? denseSchur_ : schur_.product();
+        grown.rightCols(added) = columns;
+        grown.bottomLeftCorner(added, old3) = columns.topRows(old3).transpose();
+        Eigen::PartialPivLU<Eigen::MatrixXd> lu(grown);
+        if (!(lu.rcond() > 1e-15))
+            throw Error("crack system: the Schur complement of " + std::to_string(total) +
+                        " crack unknowns is singular (reciprocal condition " + std::to_string(lu.rcond()) +
+                        "); the crack mesh is probably degenerate (slivers, overlapping sheets)");
+        denseSchur_ = std::move(grown);
+        lu_ = std::move(lu);
+        schur_ = BorderedCholesky();
+    }
 
     C_.conservativeResize(Eigen::NoChange, new3);
     C_.rightCols(added) = coupling.C;
@@ -255,7 +272,10 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {
         return s;
     }
     s.openings = loadOnCracks(q) - C_.transpose() * b;
-    schur_.solveInPlace(s.openings);
+    if (denseSchur_.size() > 0)
+        s.openings = lu_.solve(Eigen::VectorXd(s.openings));
+    else
+        schur_.solveInPlace(s.openings);
     if (!s.openings.allFinite())
         throw Error("crack system: the Schur complement solve gave NaN or Inf; the crack mesh is probably degenerate");
     s.displacements = b - regularisedLoadSolve(C_ * s.openings);
@@ -294,7 +314,8 @@ Eigen::VectorXd CrackSystem::loadOnCracks(const Eigen::VectorXd& q) const {
 }
 
 std::size_t CrackSystem::matrixBytes() const {
-    return sizeof(double) * (C_.size() + D_.size()) + sizeof(float) * G_.size() + schur_.bytes();
+    return sizeof(double) * (C_.size() + D_.size() + 2 * denseSchur_.size()) + sizeof(float) * G_.size() +
+           schur_.bytes();
 }
 
 Eigen::VectorXd CrackSystem::nodalOpenings(const Solution& s) const {

@@ -11,12 +11,15 @@
 // positive definite up to rounding (and up to the rigid modes' residue in K, 1e-6 of S near
 // crack mouths) and is factored by Cholesky as symmetric, from its columns S(:, new) = D(:, new) -
 // C^T K_R^-1 K^T C_new. When a crack grows, only the new unknowns' columns are computed and the
-// factor is extended by bordering (BorderedCholesky): D is folded into it and freed.
+// factor is extended by bordering (BorderedCholesky): D is folded into it and freed. A system
+// whose S is not numerically positive definite (carried cracks that leave a fragment's surface)
+// is factored by LU from then on, S held in full and refactored when it grows (logged).
 #include <btFracture/bem/BorderedCholesky.h>
 #include <btFracture/bem/CrackMesh.h>
 #include <btFracture/bem/ElasticSolver.h>
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 namespace btfracture {
 
@@ -65,6 +68,8 @@ private:
     Eigen::VectorXd loadOnCracks(const Eigen::VectorXd& tractions) const;  // G q
     Eigen::MatrixXd regularisedLoadSolve(const Eigen::MatrixXd& b) const;  // K_R^-1 K^T b
     BorderedCholesky schur_;  // S = D - C^T K_R^-1 K^T C
+    Eigen::MatrixXd denseSchur_;               // S in full, once Cholesky failed
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu_;  // its LU
     int assembledUnknowns_ = 0;
 };
 
