@@ -53,9 +53,10 @@ struct CrackSettings {
     double frontEdgeLength = 1.0;  // target length of new front edges [h]
     double minimumSpeed = 0.1;     // crack speed floor [fraction of the Rayleigh speed]
     // k of §4.2. The paper uses 1.1215 (through edge crack, Gross & Seelig table 4.1), but its
-    // BEM and ours represent every crack with zero opening on the whole sheet boundary, i.e. as
-    // an embedded crack, whose factor is 2/pi (penny crack). Measured against FULL on a growing
-    // mode-I crack: 2/pi tracks within 5 %, 1.1215 overestimates 1.7-3x (tests/crack).
+    // BEM and ours hold grown cracks at zero opening on the whole sheet boundary (FULL opens a
+    // mouth only where a sheet meets the surface at surface nodes), i.e. as embedded cracks,
+    // whose factor is 2/pi (penny crack). Measured against FULL on a growing mode-I crack: 2/pi
+    // tracks within 5 %, 1.1215 overestimates 1.7-3x (tests/crack).
     double estimatorGeometryFactor = 2.0 / M_PI;
     bool estimatorUpdate = true;  // the right-hand-side update of §4.3
     // If > 0, the §4.3 update may raise a front's estimated K_eff at most this factor above the
