@@ -38,18 +38,14 @@ bool BorderedCholesky::extend(const Eigen::Ref<const Eigen::MatrixXd>& columns, 
 }
 
 void BorderedCholesky::forwardSubstitute(Eigen::Ref<Eigen::MatrixXd> x) const {
-    // Column blocks of a fixed width are independent: the result is the same on any core count.
-    constexpr int kBlock = 32;
-    const int n = static_cast<int>(x.cols());
-#pragma omp parallel for schedule(dynamic, 1) if (n > kBlock)
-    for (int j0 = 0; j0 < n; j0 += kBlock) {
-        auto xs = x.middleCols(j0, std::min(kBlock, n - j0));
+    forEachColumnBlock(x.cols(), 32, [&](int j0, int w) {
+        auto xs = x.middleCols(j0, w);
         for (const Panel& p : panels_) {
             const int h = static_cast<int>(p.L.rows());
             if (p.row0 > 0) xs.middleRows(p.row0, h).noalias() -= p.L.leftCols(p.row0) * xs.topRows(p.row0);
             p.L.rightCols(h).triangularView<Eigen::Lower>().solveInPlace(xs.middleRows(p.row0, h));
         }
-    }
+    });
 }
 
 void BorderedCholesky::solveInPlace(Eigen::Ref<Eigen::VectorXd> x) const {

@@ -4,6 +4,7 @@
 #include <btFracture/bem/RigidModes.h>
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
+#include <btFracture/core/ParallelProduct.h>
 #include <btFracture/core/Timer.h>
 
 #include <Eigen/Cholesky>
@@ -87,16 +88,12 @@ TractionResultant ElasticSolver::netLoad(const Eigen::VectorXd& q) const {
 }
 
 Eigen::MatrixXd ElasticSolver::solveRegularised(const Eigen::MatrixXd& rhs) const {
-    // Column blocks of a fixed width on all cores: the same result on any thread count.
-    constexpr int kBlock = 16;
-    const int n = static_cast<int>(rhs.cols());
     Eigen::MatrixXd x = rhs;
-#pragma omp parallel for schedule(dynamic, 1) if (n > kBlock)
-    for (int j0 = 0; j0 < n; j0 += kBlock) {
-        auto xs = x.middleCols(j0, std::min(kBlock, n - j0));
+    forEachColumnBlock(x.cols(), 16, [&](int j0, int w) {
+        auto xs = x.middleCols(j0, w);
         factor_.triangularView<Eigen::Lower>().solveInPlace(xs);
         factor_.triangularView<Eigen::Lower>().transpose().solveInPlace(xs);
-    }
+    });
     return x;
 }
 
