@@ -7,6 +7,7 @@
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/ContactCurvature.h>
+#include <btFracture/dynamics/FiniteState.h>
 #include <btFracture/dynamics/FractureEnergy.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/HertzContact.h>
@@ -366,13 +367,7 @@ namespace {
 // every body it touches. Throws btfracture::Error naming the body.
 void requireFiniteState(const btRigidBody* body) {
     const btFractureRigidBody* f = btFractureRigidBody::upcast(body);
-    if (!f) return;
-    const btTransform& t = f->getWorldTransform();
-    const btVector3 v = f->getLinearVelocity(), w = f->getAngularVelocity(), p = t.getOrigin();
-    const btQuaternion q = t.getRotation();
-    const double sum = double(v.x()) + v.y() + v.z() + w.x() + w.y() + w.z() + p.x() + p.y() + p.z() + q.x() +
-                       q.y() + q.z() + q.w();
-    if (!std::isfinite(sum))
+    if (f && !hasFiniteState(*f))
         throw Error(f->name() +
                     ": non-finite position, orientation or velocity (NaN or Inf); not added to the world");
 }

@@ -6,6 +6,7 @@
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/Primitives.h>
+#include <btFracture/dynamics/FiniteState.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/geometry/ClosestPointTree.h>
 #include <btFracture/io/CrackFaces.h>
@@ -327,15 +328,10 @@ void SceneWorld::stepFrame() {
 int SceneWorld::framesTaken() const {
     return impl_->frames;
 }
+
 const SceneWorld::Body* SceneWorld::firstNonFiniteBody() const {
-    for (const Body& b : bodies()) {
-        const btTransform& t = b.rigidBody->getWorldTransform();
-        const btVector3 p = t.getOrigin(), v = b.rigidBody->getLinearVelocity(), w = b.rigidBody->getAngularVelocity();
-        const btQuaternion q = t.getRotation();
-        if (!std::isfinite(p.x() + p.y() + p.z() + v.x() + v.y() + v.z() + w.x() + w.y() + w.z() + q.x() +
-                           q.y() + q.z() + q.w()))
-            return &b;
-    }
+    for (const Body& b : bodies())
+        if (!hasFiniteState(*b.rigidBody)) return &b;
     return nullptr;
 }
 
