@@ -132,6 +132,13 @@ private:
         return value.get<double>();
     }
 
+    // A finite number >= 0; `expected` says what (e.g. "a mass >= 0 [kg]").
+    double nonNegative(const Json& value, const std::string& path, const std::string& expected) const {
+        const double x = number(value, path, expected);
+        if (!(x >= 0.0)) fail(path, "expected " + expected + ", got " + shown(value));
+        return x;
+    }
+
     double positive(const Json& value, const std::string& path, const std::string& unit) const {
         const std::string expected = "a positive number" + (unit.empty() ? "" : " [" + unit + "]");
         const double x = number(value, path, expected);
@@ -354,13 +361,9 @@ private:
                 integer(value["collision_triangles"], child(path, "collision_triangles"), 4);
         if (value.contains("voxel_size"))
             r.voxelSize = positive(value["voxel_size"], child(path, "voxel_size"), "m");
-        if (value.contains("crack_element_size")) {
-            const std::string cpath = child(path, "crack_element_size");
-            const std::string expected = "a number >= 0 [m] (0: relative to the BEM mesh)";
-            r.crackElementSize = number(value["crack_element_size"], cpath, expected);
-            if (!(r.crackElementSize >= 0.0))
-                fail(cpath, "expected " + expected + ", got " + shown(value["crack_element_size"]));
-        }
+        if (value.contains("crack_element_size"))
+            r.crackElementSize = nonNegative(value["crack_element_size"], child(path, "crack_element_size"),
+                                             "a number >= 0 [m] (0: relative to the BEM mesh)");
         if (r.collisionTriangleTarget < r.bemTriangleTarget)
             fail(path, "collision_triangles (" + std::to_string(r.collisionTriangleTarget) +
                            ") must be >= bem_triangles (" + std::to_string(r.bemTriangleTarget) +
@@ -548,11 +551,8 @@ private:
             b.angularVelocity = vector3(value["angular_velocity"], child(path, "angular_velocity"), "rad/s");
         if (value.contains("material"))
             b.material = material(value["material"], child(path, "material"), b.name);
-        if (value.contains("friction")) {
-            b.friction = number(value["friction"], child(path, "friction"), "a number >= 0");
-            if (b.friction < 0.0)
-                fail(child(path, "friction"), "expected a number >= 0, got " + shown(value["friction"]));
-        }
+        if (value.contains("friction"))
+            b.friction = nonNegative(value["friction"], child(path, "friction"), "a number >= 0");
         if (value.contains("restitution")) {
             b.restitution = number(value["restitution"], child(path, "restitution"), "a number in [0, 1]");
             if (!(b.restitution >= 0.0 && b.restitution <= 1.0))
@@ -575,10 +575,8 @@ private:
         b.density = value.contains("density") ? positive(value["density"], child(path, "density"), "kg/m^3")
                                               : b.material.density();
         if (value.contains("mass")) {
-            const double mass = number(value["mass"], child(path, "mass"), "a mass >= 0 [kg] (0 = static)");
-            if (mass < 0.0)
-                fail(child(path, "mass"),
-                     "expected a mass >= 0 [kg] (0 = static), got " + shown(value["mass"]));
+            const double mass =
+                nonNegative(value["mass"], child(path, "mass"), "a mass >= 0 [kg] (0 = static)");
             if (b.shape.type == SceneShapeType::Plane && mass != 0.0)
                 fail(child(path, "mass"), "a plane is always static (mass 0), got " + shown(value["mass"]));
             b.mass = mass;
