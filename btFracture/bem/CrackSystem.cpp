@@ -156,7 +156,8 @@ CrackSystem::CrackSystem(const ElasticSolver& solver, CrackMesh& cracks, Blocks 
 }
 
 const Eigen::MatrixXd& CrackSystem::crackCrackBlock() const {
-    if (blocks_ != Blocks::Keep) throw Error("CrackSystem: D is folded into the factor (construct with Blocks::Keep)");
+    if (blocks_ != Blocks::Keep)
+        throw Error("CrackSystem: D is folded into the factor (construct with Blocks::Keep)");
     return D_;
 }
 
@@ -225,7 +226,7 @@ int CrackSystem::update() {
     if (blocks_ == Blocks::Keep) newD = columns;
 
     // Schur complement columns S(:, new) = D(:, new) - C^T K_R^-1 K^T C_new; the new rows are
-    // their transpose (the upper triangle of S is factored).
+    // their transpose (S is factored as symmetric).
     const Eigen::MatrixXd H = regularisedLoadSolve(coupling.C);
     if (old3 > 0) columns.topRows(old3) -= transposedProduct(C_, H);
     columns.bottomRows(added) -= transposedProduct(coupling.C, H);
@@ -272,12 +273,20 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {
         return s;
     }
     s.openings = loadOnCracks(q) - C_.transpose() * b;
-    if (denseSchur_.size() > 0)
-        s.openings = lu_.solve(Eigen::VectorXd(s.openings));
-    else
+    if (denseSchur_.size() > 0) {
+        const Eigen::VectorXd rhs = s.openings;
+        s.openings = lu_.solve(rhs);
+        const double residual = (denseSchur_ * s.openings - rhs).norm() / std::max(rhs.norm(), 1e-300);
+        if (!(residual <= 1e-8))
+            throw Error("crack system: Schur complement solve failed (relative residual " +
+                        std::to_string(residual) + "); the crack mesh is probably degenerate");
+    } else {
         schur_.solveInPlace(s.openings);
+    }
     if (!s.openings.allFinite())
-        throw Error("crack system: the Schur complement solve gave NaN or Inf; the crack mesh is probably degenerate");
+        throw Error(
+            "crack system: the Schur complement solve gave NaN or Inf; the crack mesh is probably "
+            "degenerate");
     s.displacements = b - regularisedLoadSolve(C_ * s.openings);
     return s;
 }

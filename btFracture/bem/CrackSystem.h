@@ -37,7 +37,7 @@ public:
 
     // Numbers the unknowns of nodes that left the front and assembles their rows and columns.
     // Returns the number of new unknown nodes. Throws btfracture::Error, leaving the system as it
-    // was, when the grown Schur complement is not positive definite (a degenerate crack mesh).
+    // was, when the grown Schur complement is singular (a degenerate crack mesh).
     int update();
 
     struct Solution {
@@ -67,9 +67,9 @@ private:
     Eigen::MatrixXf G_;
     Eigen::VectorXd loadOnCracks(const Eigen::VectorXd& tractions) const;  // G q
     Eigen::MatrixXd regularisedLoadSolve(const Eigen::MatrixXd& b) const;  // K_R^-1 K^T b
-    BorderedCholesky schur_;  // S = D - C^T K_R^-1 K^T C
-    Eigen::MatrixXd denseSchur_;               // S in full, once Cholesky failed
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu_;  // its LU
+    BorderedCholesky schur_;                                               // S = D - C^T K_R^-1 K^T C
+    Eigen::MatrixXd denseSchur_;                                           // S in full, once Cholesky failed
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu_;                              // its LU
     int assembledUnknowns_ = 0;
 };
 
