@@ -187,10 +187,10 @@ TrimResult trimOverlaps(std::vector<SeparationBody>& bodies, const TrimOptions& 
                         if (mi > options.heavyRatio * mj) shareA = 0.0;
                         if (mj > options.heavyRatio * mi) shareA = 1.0;
                         const double c = ea[1] - shareA * overlap;
-                        ClippedPolytope cutA = shareA > 0.0 ? clipConvexPolytope(a, d, c)
-                                                            : ClippedPolytope{a, volume[i][pa]};
-                        ClippedPolytope cutB = shareA < 1.0 ? clipConvexPolytope(b, -d, -c)
-                                                            : ClippedPolytope{b, volume[j][pb]};
+                        ClippedPolytope cutA =
+                            shareA > 0.0 ? clipConvexPolytope(a, d, c) : ClippedPolytope{a, volume[i][pa]};
+                        ClippedPolytope cutB =
+                            shareA < 1.0 ? clipConvexPolytope(b, -d, -c) : ClippedPolytope{b, volume[j][pb]};
                         if (cutA.volume < floor[i][pa] || cutB.volume < floor[j][pb] ||
                             cutA.polytope.points.size() < 4 || cutB.polytope.points.size() < 4) {
                             ++result.declined;

@@ -21,7 +21,8 @@ double closedMeshVolume(const TriangleMesh& mesh) {
 
 }  // namespace
 
-ClippedPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::Vector3d& normal, double offset) {
+ClippedPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::Vector3d& normal,
+                                   double offset) {
     ClippedPolytope clipped;
     ConvexPolytope& out = clipped.polytope;
     out.margin = polytope.margin;

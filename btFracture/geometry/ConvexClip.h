@@ -18,7 +18,8 @@ struct ClippedPolytope {
 // is one of these); its corners are returned, with the cut hull's volume. The margin is kept, so
 // the result's surface reaches at most to the plane n.x = offset. `normal` must be a unit vector.
 // No points when what is left is flat or empty.
-ClippedPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::Vector3d& normal, double offset);
+ClippedPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::Vector3d& normal,
+                                   double offset);
 
 // Volume of the hull of the polytope's points (margin not included) [m^3]; 0 when flat.
 double hullVolume(const ConvexPolytope& polytope);

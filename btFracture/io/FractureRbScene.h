@@ -62,9 +62,9 @@ std::vector<FractureRbObject> parseFractureRbCsv(const std::string& text, const 
 //    importer not restoring GImpact bodies does not matter) and compounds with one child;
 //  - a CSV row sets velocities and state, and with 20 or more columns makes a dynamic body
 //    breakable: its material, voxel size, crack element size (the crack mesh size), BEM
-//    resolution (the remesh target, else the mesh's own
-//    triangle count, as FractureRB does), fracture method, and a mass from density x volume (as
-//    FractureRB recomputes it); settings btFracture has no use for are logged;
+//    resolution (the remesh target, else the mesh's own triangle count, as FractureRB does),
+//    fracture method, and a mass from density x volume (as FractureRB recomputes it); settings
+//    btFracture has no use for are logged;
 //  - the world: the file's gravity, dt = 1/250 s and 1000 steps (FractureRB's defaults),
 //    outputs motion, gltf, csv and png.
 // Throws btfracture::Error naming the file (and for CSV problems line and column) when a file

@@ -231,7 +231,8 @@ TEST(ConvexClip, CutBoxKeepsItsPartAndReportsItsVolume) {
     // With a margin the surface, not the points, stops at the plane.
     box.margin = 0.1;
     EXPECT_NEAR(extentAlong(clipConvexPolytope(box, Eigen::Vector3d::UnitX(), 0.25).polytope,
-                            Eigen::Vector3d::UnitX())[1], 0.25, 1e-12);
+                            Eigen::Vector3d::UnitX())[1],
+                0.25, 1e-12);
 }
 
 }  // namespace
