@@ -6,6 +6,7 @@
 #   METRIC sweep_bem<N>_seconds_per_run <value> s        (mean wall time of one run)
 #   METRIC sweep_bem<N>_cpu_seconds_per_run <value> s    (mean CPU time of one run; on a shared
 #     machine 3600 x cores / this is the rate undisturbed cores would give)
+#   METRIC sweep_bem<N>_longest_run <value> s             (CPU time of the slowest run)
 #   METRIC sweep_bem<N>_peak_memory_per_run <value> MB   (largest resident set of a run)
 #   bench/sweep_throughput.sh [BUILD] [RUNS] [JOBS]      (defaults build 8 2)
 set -euo pipefail
@@ -26,13 +27,14 @@ for bem in 500 1000; do
   "$build/demos/btfracture-sweep" --collect "$work/out$bem" > /dev/null
   # index.csv columns: status 2, wall_s 27, cpu_s 29, peak_memory_mb 30
   awk -F, -v runs="$runs" -v start="$start" -v end="$end" -v bem="$bem" 'NR > 1 {
-      n++; done += ($2 == "done"); seconds += $27; cpu += $29; if ($30 > memory) memory = $30 }
+      n++; done += ($2 == "done"); seconds += $27; cpu += $29; if ($29 > longest) longest = $29; if ($30 > memory) memory = $30 }
     END {
       wall = end - start
       if (n != runs) { print "sweep_throughput: " n " of " runs " runs finished" > "/dev/stderr"; exit 1 }
       printf "METRIC sweep_bem%d_runs_per_hour %.0f runs/h\n", bem, 3600 * runs / wall
       printf "METRIC sweep_bem%d_seconds_per_run %.1f s\n", bem, seconds / n
       printf "METRIC sweep_bem%d_cpu_seconds_per_run %.1f s\n", bem, cpu / n
+      printf "METRIC sweep_bem%d_longest_run %.1f s\n", bem, longest
       printf "METRIC sweep_bem%d_peak_memory_per_run %.0f MB\n", bem, memory
       printf "sweep_throughput: BEM %d: %d runs (%d done) in %.0f s wall\n", bem, n, done, wall > "/dev/stderr"
     }' "$work/out$bem/index.csv"
