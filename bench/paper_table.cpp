@@ -171,7 +171,7 @@ Result run(const Case& c, const fs::path& scenes, const fs::path& out) {
     r.method = methods(scene);
     r.fragments = static_cast<int>(recorder.fragments().size());
     r.events = recorder.events();
-    r.fractureSeconds = recorder.fractureSeconds() + recorder.swapSeconds();
+    r.fractureSeconds = fractureWorld->fractureStatistics().fractureSeconds();
     r.rigidSeconds = stepSeconds - r.fractureSeconds;
     for (const int m : sizes.sizes) {
         r.mMax = std::max(r.mMax, m);

@@ -610,6 +610,7 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             continue;
         }
         Event event{body, {}, {}, {}, {}, {}, {}, 0.0};
+        Timer timer;
         try {
             if (!buildContacts(*body, contacts)) continue;
             event.info.step = stats_.steps;
@@ -618,15 +619,17 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             for (const BodyContact& c : contacts)
                 event.info.contactDuration = std::max(event.info.contactDuration, c.duration);
             ++stats_.engineCalls;
-            Timer timer;
+            timer.restart();
             event.outcome = engine_->fracture(*body, contacts, stats_);
             event.info.engineSeconds = timer.seconds();
+            stats_.engineSeconds += event.info.engineSeconds;
             event.info.engineTimings = event.outcome.timings;
             event.info.crackTriangles = event.outcome.crackTriangles;
             for (std::size_t k = 0; k < event.outcome.fragments.size(); ++k)
                 validateSpec(event.outcome.fragments[k], body->originalVolume(),
                              body->name() + ": fragment " + std::to_string(k));
         } catch (const Error& error) {
+            if (event.info.engineSeconds == 0.0) stats_.engineSeconds += timer.seconds();  // fracture() threw
             ++stats_.engineFailures;
             logf(LogLevel::Error, body->name(), ": fracture failed, body made unbreakable: ", error.what());
             FractureBodySettings settings = body->settings();
@@ -729,7 +732,9 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             f->applyGravity();
         }
     }
-    for (Event& event : events) event.info.swapSeconds = swapTimer.seconds();
+    const double swapSeconds = swapTimer.seconds();
+    stats_.swapSeconds += swapSeconds;
+    for (Event& event : events) event.info.swapSeconds = swapSeconds;
     for (Event& event : events)
         for (FractureListener* listener : listeners_)
             listener->onFractureEvent(*event.parent, event.fragments, event.info);

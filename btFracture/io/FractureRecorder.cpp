@@ -46,8 +46,6 @@ std::vector<std::string> FractureRecorder::record(FractureEventRecord record,
         record.fragments.push_back(name);
     }
     ++events_;
-    fractureSeconds_ += record.fractureSeconds;
-    swapSeconds_ += record.swapSeconds;
     std::vector<std::string> names = record.fragments;
     if (csv_) pending_.push_back(std::move(record));
     return names;

@@ -46,8 +46,6 @@ public:
     std::vector<Fragment> fragments() const;
 
     int events() const { return events_; }
-    double fractureSeconds() const { return fractureSeconds_; }  // summed record.fractureSeconds
-    double swapSeconds() const { return swapSeconds_; }          // summed record.swapSeconds
 
     // Writes `histogramCsv` with the current fragments' relative volumes against Mott's
     // distribution (io/MottHistogram.h), and `fragmentsCsv` listing them
@@ -76,7 +74,6 @@ private:
     std::map<std::string, int> nextIndex_;     // per original: k of its next fragment
     size_t created_ = 0;
     int events_ = 0;
-    double fractureSeconds_ = 0.0, swapSeconds_ = 0.0;
 };
 
 }  // namespace btfracture

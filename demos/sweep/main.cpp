@@ -345,7 +345,7 @@ int runOne(const Options& options, const SweepSpec& spec, int index) {
         impacts.writeCsv((dir / "contacts.csv").string());
         outcome.fractureEvents = recorder.events();
         outcome.impact = impactSummary(impacts);
-        fractureSeconds = recorder.fractureSeconds() + recorder.swapSeconds();
+        fractureSeconds = fractureWorld.fractureStatistics().fractureSeconds();
         outputSeconds = output.seconds();
         if (!outcome.error.empty()) {
             outcome.status = "failed";

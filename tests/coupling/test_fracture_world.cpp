@@ -9,8 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <thread>
 
 using namespace btfracture;
 using namespace btfracture::test;
@@ -53,6 +55,8 @@ TEST(FractureWorld, BallBreaksSlabAboveThreshold) {
     EXPECT_EQ(s.fractureEvents, 1u);
     EXPECT_EQ(s.bemBuilds, 1u);
     EXPECT_EQ(s.replayedSteps, 1u);
+    EXPECT_GT(s.swapSeconds, 0.0);
+    EXPECT_EQ(s.swapSeconds, listener.lastInfo.swapSeconds);
     EXPECT_EQ(listener.fragmentCount, 2);
     EXPECT_FALSE(listener.parentInWorld);
     EXPECT_FALSE(scene.slab->isInWorld());
@@ -528,6 +532,26 @@ TEST(FractureWorld, RefractureStopsAtMaxDepth) {
             }
         }
     }
+}
+
+// Fracture time (t_f) counts every engine call, also those that break nothing; no swap happened.
+TEST(FractureWorld, FractureTimeCountsCallsThatBreakNothing) {
+    struct Slow : FractureEngine {
+        FractureOutcome fracture(btFractureRigidBody&, const std::vector<BodyContact>&,
+                                 FractureStatistics&) override {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            return {};
+        }
+    };
+    Scene scene;
+    scene.world->setFractureEngine(std::make_unique<Slow>());
+    scene.step(30);
+    const FractureStatistics& s = scene.world->fractureStatistics();
+    ASSERT_GE(s.engineCalls, 1u);
+    EXPECT_EQ(s.fractureEvents, 0u);
+    EXPECT_GE(s.engineSeconds, 0.005 * double(s.engineCalls));
+    EXPECT_EQ(s.swapSeconds, 0.0);
+    EXPECT_EQ(s.fractureSeconds(), s.engineSeconds);
 }
 
 TEST(FractureWorld, EngineErrorMakesBodyUnbreakable) {
