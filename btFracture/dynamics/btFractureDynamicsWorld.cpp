@@ -11,14 +11,13 @@
 #include <btFracture/dynamics/FractureEnergy.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/HertzContact.h>
+#include <btFracture/dynamics/NewPairMultipoint.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/geometry/ConvexHull.h>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btCollisionConfiguration.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
-#include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
-#include <BulletCollision/CollisionDispatch/btConvexPlaneCollisionAlgorithm.h>
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
@@ -27,8 +26,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
-#include <tuple>
 
 namespace btfracture {
 namespace {
@@ -128,58 +127,6 @@ void validateSpec(const FragmentSpec& spec, double originalVolume, const std::st
         throw Error(out.str());
     }
 }
-
-// While alive, convex-convex and convex-plane pairs that get their collision algorithm (i.e. the
-// new fragments' pairs in the replayed step) use Bullet's perturbed multi-point contact
-// generation, so a fragment resting on something starts with a full contact manifold instead of
-// one point per step (which lets it sink and tip: popping). Other pairs keep their algorithms.
-// A pair takes the create function of its shapes in its proxies' order, and a plane added to
-// the world before the fragments (the usual ground) comes first: both orders are switched.
-class MultipointContactsForNewPairs {
-public:
-    explicit MultipointContactsForNewPairs(btCollisionConfiguration* configuration) {
-        if (!configuration) return;
-        convex_ =
-            dynamic_cast<btConvexConvexAlgorithm::CreateFunc*>(configuration->getCollisionAlgorithmCreateFunc(
-                CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
-        planes_[0] = dynamic_cast<btConvexPlaneCollisionAlgorithm::CreateFunc*>(
-            configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE,
-                                                           STATIC_PLANE_PROXYTYPE));
-        planes_[1] = dynamic_cast<btConvexPlaneCollisionAlgorithm::CreateFunc*>(
-            configuration->getCollisionAlgorithmCreateFunc(STATIC_PLANE_PROXYTYPE,
-                                                           CONVEX_HULL_SHAPE_PROXYTYPE));
-        if (convex_) {
-            saved_[0] = {convex_->m_numPerturbationIterations, convex_->m_minimumPointsPerturbationThreshold};
-            convex_->m_numPerturbationIterations = kIterations;
-            convex_->m_minimumPointsPerturbationThreshold = kMinimumPoints;
-        }
-        for (int k = 0; k < 2; ++k)
-            if (planes_[k]) {
-                saved_[k + 1] = {planes_[k]->m_numPerturbationIterations,
-                                 planes_[k]->m_minimumPointsPerturbationThreshold};
-                planes_[k]->m_numPerturbationIterations = kIterations;
-                planes_[k]->m_minimumPointsPerturbationThreshold = kMinimumPoints;
-            }
-    }
-    ~MultipointContactsForNewPairs() {
-        if (convex_)
-            std::tie(convex_->m_numPerturbationIterations, convex_->m_minimumPointsPerturbationThreshold) =
-                saved_[0];
-        for (int k = 0; k < 2; ++k)
-            if (planes_[k])
-                std::tie(planes_[k]->m_numPerturbationIterations,
-                         planes_[k]->m_minimumPointsPerturbationThreshold) = saved_[k + 1];
-    }
-    MultipointContactsForNewPairs(const MultipointContactsForNewPairs&) = delete;
-    MultipointContactsForNewPairs& operator=(const MultipointContactsForNewPairs&) = delete;
-
-private:
-    static constexpr int kIterations = 3, kMinimumPoints = 3;  // btDefaultCollisionConfiguration's suggestion
-    btConvexConvexAlgorithm::CreateFunc* convex_ = nullptr;
-    btConvexPlaneCollisionAlgorithm::CreateFunc* planes_[2] = {nullptr,
-                                                               nullptr};  // convex-plane, plane-convex
-    std::pair<int, int> saved_[3];  // iterations, minimum points: convex, then the two plane orders
-};
 
 // While alive (and `active`), penetrations deeper than `depth` are recovered by split impulse;
 // the solver info is restored afterwards.
@@ -742,7 +689,9 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
 
     replaying_ = true;
     {
-        const MultipointContactsForNewPairs multipoint(collisionConfiguration_);
+        auto* dispatcher = dynamic_cast<btCollisionDispatcher*>(m_dispatcher1);
+        std::optional<NewPairMultipoint> multipoint;
+        if (dispatcher && collisionConfiguration_) multipoint.emplace(*dispatcher, *collisionConfiguration_);
         const SplitImpulseBelowDepth split(getSolverInfo(), splitImpulseForFragments_, splitImpulseDepth_);
         btDiscreteDynamicsWorld::internalSingleStepSimulation(timeStep);
     }
