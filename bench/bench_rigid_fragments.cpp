@@ -15,10 +15,11 @@
 // scene's path instead of "400_fragments" for another scene), the rigid share of the step time,
 // the bodies at the end and the per-phase times.
 //
-// Usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] [--no-sleeping]
+// Usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] [--sleeping]
 //   --hull-vertices N  collision hull corner budget of the scene's breakable bodies and their
 //                      fragments (0: every corner; default: CollisionShapeOptions)
-//   --no-sleeping      fragments keep their parent's sleeping thresholds (Bullet's 2 s rule)
+//   --sleeping         fragment sleeping on (btFractureDynamicsWorld::setFragmentSleeping; off by
+//                      default: fragments keep their parent's thresholds, Bullet's 2 s rule)
 #include <btFracture/core/ThreadLimit.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
@@ -93,7 +94,7 @@ double zone(const char* name) {
 
 int main(int argc, char** argv) {
     std::string file = std::string(BTFRACTURE_MESH_DIR) + "/../scenes/column_bunny.json";
-    bool defaultScene = true, sleeping = true;
+    bool defaultScene = true, sleeping = false;
     int steps = -1, hullVertices = -1;
     for (int i = 1; i < argc; ++i) {
         const bool hasValue = i + 1 < argc;
@@ -101,15 +102,15 @@ int main(int argc, char** argv) {
             steps = std::atoi(argv[++i]);
         } else if (!std::strcmp(argv[i], "--hull-vertices") && hasValue) {
             hullVertices = std::atoi(argv[++i]);
-        } else if (!std::strcmp(argv[i], "--no-sleeping")) {
-            sleeping = false;
+        } else if (!std::strcmp(argv[i], "--sleeping")) {
+            sleeping = true;
         } else if (argv[i][0] != '-') {
             file = argv[i];
             defaultScene = false;
         } else {
             std::fprintf(stderr,
                          "usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] "
-                         "[--no-sleeping]\n");
+                         "[--sleeping]\n");
             return 2;
         }
     }
@@ -124,7 +125,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_rigid_fragments: %s has no breakable body\n", file.c_str());
         return 2;
     }
-    if (!sleeping) fractureWorld->setFragmentSleeping(false);
+    if (sleeping) fractureWorld->setFragmentSleeping(true);
     FractureRecorder recorder;
     FractureRecorderListener names(recorder, scene.world.dt / scene.world.substeps);
     for (const auto& body : world.bodies())
