@@ -73,7 +73,8 @@ void leaveZone() {
 // Narrowphase time per pair of shape type names [s] and the pairs' count.
 std::map<std::string, std::pair<double, long>> pairTimes;
 
-void timedNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher, const btDispatcherInfo& info) {
+void timedNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
+                       const btDispatcherInfo& info) {
     const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
     const auto* b = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
     std::string x = a->getCollisionShape()->getName(), y = b->getCollisionShape()->getName();
@@ -181,18 +182,18 @@ int main(int argc, char** argv) {
     const double predict = zone("predictUnconstraintMotion") + zone("createPredictiveContacts");
     const double activation = zone("updateActivationState");
     const double rest = rigid - broad - narrow - islands - solver - integrate - predict - activation;
-    const std::pair<const char*, double> phases[] = {
-        {"broadphase", broad}, {"narrowphase", narrow},         {"islands", islands},
-        {"solver", solver},    {"integrate_ccd", integrate},     {"predict", predict},
-        {"activation", activation}, {"outside_bullet", rest}};
+    const std::pair<const char*, double> phases[] = {{"broadphase", broad},        {"narrowphase", narrow},
+                                                     {"islands", islands},         {"solver", solver},
+                                                     {"integrate_ccd", integrate}, {"predict", predict},
+                                                     {"activation", activation},   {"outside_bullet", rest}};
     for (const auto& [name, seconds] : phases)
         std::printf("METRIC rigid_%s_ms_per_step_%s %.3f ms\n", name, tag.c_str(), seconds * perStep);
     std::vector<std::pair<std::string, std::pair<double, long>>> pairs(pairTimes.begin(), pairTimes.end());
     std::sort(pairs.begin(), pairs.end(),
               [](const auto& a, const auto& b) { return a.second.first > b.second.first; });
     for (const auto& [name, entry] : pairs)
-        std::printf("  narrowphase %-40s %8.3f ms per step, %8.1f pairs per step, %6.2f us per pair\n", name.c_str(),
-                    entry.first * perStep, double(entry.second) / scene.world.steps,
+        std::printf("  narrowphase %-40s %8.3f ms per step, %8.1f pairs per step, %6.2f us per pair\n",
+                    name.c_str(), entry.first * perStep, double(entry.second) / scene.world.steps,
                     entry.second > 0 ? 1e6 * entry.first / double(entry.second) : 0.0);
     return 0;
 }

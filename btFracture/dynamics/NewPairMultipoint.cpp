@@ -23,9 +23,9 @@ struct Perturbation {
 class PhasedCreateFunc : public btCollisionAlgorithmCreateFunc {
 public:
     explicit PhasedCreateFunc(Perturbation plain) : plain_(plain) {}
-    virtual btCollisionAlgorithm* make(btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* a,
-                                       const btCollisionObjectWrapper* b, btPersistentManifold* manifold,
-                                       Perturbation perturbation) = 0;
+    virtual btCollisionAlgorithm* make(btCollisionAlgorithmConstructionInfo& ci,
+                                       const btCollisionObjectWrapper* a, const btCollisionObjectWrapper* b,
+                                       btPersistentManifold* manifold, Perturbation perturbation) = 0;
     btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& ci,
                                                    const btCollisionObjectWrapper* a,
                                                    const btCollisionObjectWrapper* b) override;
@@ -101,13 +101,15 @@ btCollisionAlgorithm* PhasedCreateFunc::CreateCollisionAlgorithm(btCollisionAlgo
 class PhasedConvexConvex : public PhasedCreateFunc {
 public:
     explicit PhasedConvexConvex(const btConvexConvexAlgorithm::CreateFunc& original)
-        : PhasedCreateFunc({original.m_numPerturbationIterations, original.m_minimumPointsPerturbationThreshold}),
+        : PhasedCreateFunc(
+              {original.m_numPerturbationIterations, original.m_minimumPointsPerturbationThreshold}),
           solver_(original.m_pdSolver) {}
     btCollisionAlgorithm* make(btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* a,
                                const btCollisionObjectWrapper* b, btPersistentManifold* manifold,
                                Perturbation p) override {
         void* memory = ci.m_dispatcher1->allocateCollisionAlgorithm(sizeof(btConvexConvexAlgorithm));
-        return new (memory) btConvexConvexAlgorithm(manifold, ci, a, b, solver_, p.iterations, p.minimumPoints);
+        return new (memory)
+            btConvexConvexAlgorithm(manifold, ci, a, b, solver_, p.iterations, p.minimumPoints);
     }
 
 private:
@@ -117,7 +119,8 @@ private:
 class PhasedConvexPlane : public PhasedCreateFunc {
 public:
     explicit PhasedConvexPlane(const btConvexPlaneCollisionAlgorithm::CreateFunc& original)
-        : PhasedCreateFunc({original.m_numPerturbationIterations, original.m_minimumPointsPerturbationThreshold}) {
+        : PhasedCreateFunc(
+              {original.m_numPerturbationIterations, original.m_minimumPointsPerturbationThreshold}) {
         m_swapped = original.m_swapped;
     }
     btCollisionAlgorithm* make(btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* a,
@@ -140,14 +143,17 @@ struct NewPairMultipoint::Registered {
     std::vector<Entry> entries;
 };
 
-NewPairMultipoint::NewPairMultipoint(btCollisionDispatcher& dispatcher, btCollisionConfiguration& configuration)
+NewPairMultipoint::NewPairMultipoint(btCollisionDispatcher& dispatcher,
+                                     btCollisionConfiguration& configuration)
     : dispatcher_(dispatcher), registered_(std::make_unique<Registered>()) {
     // The create functions of convex hull against convex hull and against a plane (both orders);
     // Bullet's default configuration shares them with the other convex shape pairs (boxes too).
     const int hull = CONVEX_HULL_SHAPE_PROXYTYPE, plane = STATIC_PLANE_PROXYTYPE;
     std::vector<std::pair<btCollisionAlgorithmCreateFunc*, PhasedCreateFunc*>> phased;
-    for (const auto& [type0, type1] : {std::pair{hull, hull}, std::pair{hull, plane}, std::pair{plane, hull}}) {
-        btCollisionAlgorithmCreateFunc* original = configuration.getCollisionAlgorithmCreateFunc(type0, type1);
+    for (const auto& [type0, type1] :
+         {std::pair{hull, hull}, std::pair{hull, plane}, std::pair{plane, hull}}) {
+        btCollisionAlgorithmCreateFunc* original =
+            configuration.getCollisionAlgorithmCreateFunc(type0, type1);
         std::unique_ptr<PhasedCreateFunc> func;
         if (auto* convex = dynamic_cast<btConvexConvexAlgorithm::CreateFunc*>(original))
             func = std::make_unique<PhasedConvexConvex>(*convex);
@@ -159,7 +165,8 @@ NewPairMultipoint::NewPairMultipoint(btCollisionDispatcher& dispatcher, btCollis
     }
     for (int type0 = 0; type0 < MAX_BROADPHASE_COLLISION_TYPES; ++type0)
         for (int type1 = 0; type1 < MAX_BROADPHASE_COLLISION_TYPES; ++type1) {
-            btCollisionAlgorithmCreateFunc* original = configuration.getCollisionAlgorithmCreateFunc(type0, type1);
+            btCollisionAlgorithmCreateFunc* original =
+                configuration.getCollisionAlgorithmCreateFunc(type0, type1);
             for (const auto& [from, to] : phased)
                 if (original == from) {
                     dispatcher.registerCollisionCreateFunc(type0, type1, to);

@@ -20,7 +20,7 @@ namespace btfracture {
 
 class NewPairMultipoint {
 public:
-    static constexpr int kPerturbedSteps = 10;  // 40 ms at 250 Hz
+    static constexpr int kPerturbedSteps = 10;                 // 40 ms at 250 Hz
     static constexpr int kIterations = 3, kMinimumPoints = 3;  // btDefaultCollisionConfiguration's suggestion
 
     // Registers the phased create functions with `dispatcher`; the destructor puts back those

@@ -71,7 +71,8 @@ std::vector<Eigen::Vector3d> staticContactNormals(btDispatcher& dispatcher, cons
 }
 
 // Dynamic bodies with solved contacts with `body` (each once, in manifold order).
-std::vector<const btRigidBody*> dynamicContactPartners(btDispatcher& dispatcher, const btCollisionObject& body) {
+std::vector<const btRigidBody*> dynamicContactPartners(btDispatcher& dispatcher,
+                                                       const btCollisionObject& body) {
     std::vector<const btRigidBody*> partners;
     for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
         const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
@@ -133,7 +134,9 @@ void validateSpec(const FragmentSpec& spec, double originalVolume, const std::st
 class SplitImpulseBelowDepth {
 public:
     SplitImpulseBelowDepth(btContactSolverInfo& info, bool active, double depth)
-        : info_(info), active_(active), split_(info.m_splitImpulse),
+        : info_(info),
+          active_(active),
+          split_(info.m_splitImpulse),
           threshold_(info.m_splitImpulsePenetrationThreshold) {
         if (!active_) return;
         info_.m_splitImpulse = 1;
@@ -161,7 +164,8 @@ Eigen::Matrix3d worldInertia(const btRigidBody& body) {
 }
 
 // Kinetic energy of `fragments` moving rigidly with `parent`: v + w x (x_f - x_parent), w.
-double rigidMotionKineticEnergy(const std::vector<btFractureRigidBody*>& fragments, const btRigidBody& parent) {
+double rigidMotionKineticEnergy(const std::vector<btFractureRigidBody*>& fragments,
+                                const btRigidBody& parent) {
     const Eigen::Vector3d origin = toEigen(parent.getWorldTransform().getOrigin());
     const Eigen::Vector3d v = toEigen(parent.getLinearVelocity()), w = toEigen(parent.getAngularVelocity());
     double sum = 0.0;
@@ -178,7 +182,8 @@ double potentialEnergy(const std::vector<btFractureRigidBody*>& fragments, const
     double sum = 0.0;
     for (const btFractureRigidBody* f : fragments) {
         const btVector3 x = f->getCenterOfMassPosition();
-        sum -= (double(g.x()) * x.x() + double(g.y()) * x.y() + double(g.z()) * x.z()) / double(f->getInvMass());
+        sum -=
+            (double(g.x()) * x.x() + double(g.y()) * x.y() + double(g.z()) * x.z()) / double(f->getInvMass());
     }
     return sum;
 }
@@ -336,7 +341,8 @@ void btFractureDynamicsWorld::addRigidBody(btRigidBody* body, int group, int mas
 void btFractureDynamicsWorld::removeRigidBody(btRigidBody* body) {
     btDiscreteDynamicsWorld::removeRigidBody(body);
     for (OpenAudit& open : audits_)
-        open.fragments.erase(std::remove(open.fragments.begin(), open.fragments.end(), body), open.fragments.end());
+        open.fragments.erase(std::remove(open.fragments.begin(), open.fragments.end(), body),
+                             open.fragments.end());
     if (btFractureRigidBody* f = btFractureRigidBody::upcast(body); f && f->inFractureWorld_) {
         f->inFractureWorld_ = false;
         --fractureBodies_;
@@ -361,8 +367,9 @@ void btFractureDynamicsWorld::setSplitImpulseForFragments(bool enabled, double d
 void btFractureDynamicsWorld::setFragmentSleeping(bool enabled, const FragmentSleeping& sleeping) {
     if (!(sleeping.window > 0.0) || !(sleeping.travel > 0.0) || !(sleeping.turn > 0.0) ||
         !(sleeping.minimumSpeed >= 0.0))
-        throw Error("btFractureDynamicsWorld: fragment sleeping window, travel and turn must be > 0 and the "
-                    "minimum speed >= 0");
+        throw Error(
+            "btFractureDynamicsWorld: fragment sleeping window, travel and turn must be > 0 and the "
+            "minimum speed >= 0");
     fragmentSleepingEnabled_ = enabled;
     fragmentSleeping_ = sleeping;
 }
@@ -374,7 +381,8 @@ void btFractureDynamicsWorld::updateActivationState(btScalar timeStep) {
 }
 
 void btFractureDynamicsWorld::setEnergyAuditSteps(int steps) {
-    if (steps < 0) throw Error("btFractureDynamicsWorld: energy audit steps must be >= 0, not " + std::to_string(steps));
+    if (steps < 0)
+        throw Error("btFractureDynamicsWorld: energy audit steps must be >= 0, not " + std::to_string(steps));
     energyAuditSteps_ = steps;
 }
 
@@ -653,7 +661,8 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
         index += event.fragments.size();
         assignParentMotion(event.fragments, eventPushes, *event.parent);
         event.info.maxSeparationPush = pushes.largestPush;
-        for (const btFractureRigidBody* f : event.fragments) event.energy.separatedKinetic += kineticEnergy(*f);
+        for (const btFractureRigidBody* f : event.fragments)
+            event.energy.separatedKinetic += kineticEnergy(*f);
         event.energy.separatedPotentialGain =
             potentialEnergy(event.fragments, event.parent->getGravity()) - event.bodyPotential;
     }

@@ -486,7 +486,8 @@ int simulate(const Options& options, const Setup& setup, SceneWorld& world, cons
     int objFrames = 0, pngFrames = 0, stepsTaken = 0;
     // The record's counters and times, as they stand (after every step, and at the end).
     const auto tally = [&] {
-        const double fractureSeconds = fractureWorld ? fractureWorld->fractureStatistics().fractureSeconds() : 0.0;
+        const double fractureSeconds =
+            fractureWorld ? fractureWorld->fractureStatistics().fractureSeconds() : 0.0;
         record.stepsTaken = stepsTaken;
         record.bodies = static_cast<int>(world.bodies().size());
         record.fractureEvents = recorder.events();

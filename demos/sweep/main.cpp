@@ -332,7 +332,8 @@ int runOne(const Options& options, const SweepSpec& spec, int index) {
         impacts.finish();
         Timer output;
         recorder.close();
-        recorder.writeFragmentVolumes((dir / "fragment_volumes.csv").string(), (dir / "fragments.csv").string());
+        recorder.writeFragmentVolumes((dir / "fragment_volumes.csv").string(),
+                                      (dir / "fragments.csv").string());
         ObjWriter pieces((dir / "fragments.obj").string());
         for (const auto& body : world.bodies())
             if (const Eigen::Isometry3d* toRest = impacts.restFrameOf(body.rigidBody)) {

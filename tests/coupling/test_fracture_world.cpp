@@ -270,10 +270,11 @@ TEST(FractureWorld, EnergyAuditFollowsTheEvent) {
     EXPECT_NEAR(a.swapKinetic, a.bodyKinetic, 1e-6 * a.bodyKinetic);
     EXPECT_NEAR(a.separatedKinetic, a.swapKinetic, 1e-3 * a.swapKinetic);
     EXPECT_LE(a.addedFraction(), 0.01) << "world energy gain " << a.worldGain << " J";
-    std::printf("audit: body %.4g J, partners %.4g J, swap %.4g, separated %.4g, replay %.4g, following max "
-                "%.4g J; world gain %.3g J (%.2g)\n",
-                a.bodyKinetic, a.partnersKinetic, a.swapKinetic, a.separatedKinetic, a.replayKinetic,
-                a.followingKinetic, a.worldGain, a.addedFraction());
+    std::printf(
+        "audit: body %.4g J, partners %.4g J, swap %.4g, separated %.4g, replay %.4g, following max "
+        "%.4g J; world gain %.3g J (%.2g)\n",
+        a.bodyKinetic, a.partnersKinetic, a.swapKinetic, a.separatedKinetic, a.replayKinetic,
+        a.followingKinetic, a.worldGain, a.addedFraction());
     scene.world->finishEnergyAudits();  // nothing open: nothing more
     EXPECT_EQ(listener.audits.size(), 1u);
     scene.world->removeFractureListener(&listener);
@@ -627,7 +628,7 @@ TEST(FractureWorld, SettledFragmentsSleepWhereTheyWouldRest) {
     for (Scene* scene : {&rolling, &sleeping, &awake}) scene->step(10);
     ASSERT_EQ(sleeping.world->fractureStatistics().fractureEvents, 1u);
     for (Scene* scene : {&sleeping, &awake}) scene->world->removeRigidBody(scene->ball.get());  // taken away
-    for (Scene* scene : {&rolling, &sleeping, &awake}) scene->step(350);  // to 1.5 s
+    for (Scene* scene : {&rolling, &sleeping, &awake}) scene->step(350);                        // to 1.5 s
     const auto a = sleeping.fragments(), b = awake.fragments();
     ASSERT_GE(a.size(), 2u);
     ASSERT_EQ(a.size(), b.size());
@@ -635,11 +636,12 @@ TEST(FractureWorld, SettledFragmentsSleepWhereTheyWouldRest) {
     for (std::size_t k = 0; k < a.size(); ++k) {
         asleep += a[k]->getActivationState() == ISLAND_SLEEPING;
         asleepWithoutFragmentSleeping += b[k]->getActivationState() == ISLAND_SLEEPING;
-        const double apart = double((a[k]->getCenterOfMassPosition() - b[k]->getCenterOfMassPosition()).length());
+        const double apart =
+            double((a[k]->getCenterOfMassPosition() - b[k]->getCenterOfMassPosition()).length());
         EXPECT_LT(apart, 0.1 * a[k]->characteristicLength()) << a[k]->name();
     }
-    std::printf("settled fragments: %zu of %zu asleep after 1.5 s (%zu with Bullet's rule)\n", asleep, a.size(),
-                asleepWithoutFragmentSleeping);
+    std::printf("settled fragments: %zu of %zu asleep after 1.5 s (%zu with Bullet's rule)\n", asleep,
+                a.size(), asleepWithoutFragmentSleeping);
     EXPECT_EQ(asleep, a.size());
     EXPECT_EQ(asleepWithoutFragmentSleeping, 0u);
     // The ball rolls on: whatever it touches stays awake with it.
@@ -647,9 +649,9 @@ TEST(FractureWorld, SettledFragmentsSleepWhereTheyWouldRest) {
     for (int m = 0; m < rolling.dispatcher.getNumManifolds(); ++m) {
         const btPersistentManifold* manifold = rolling.dispatcher.getManifoldByIndexInternal(m);
         if (manifold->getNumContacts() == 0) continue;
-        const btCollisionObject* other = manifold->getBody0() == rolling.ball.get() ? manifold->getBody1()
+        const btCollisionObject* other = manifold->getBody0() == rolling.ball.get()   ? manifold->getBody1()
                                          : manifold->getBody1() == rolling.ball.get() ? manifold->getBody0()
-                                                                                       : nullptr;
+                                                                                      : nullptr;
         if (other && rolling.world->ownsBody(other)) {
             EXPECT_TRUE(other->isActive());
         }
