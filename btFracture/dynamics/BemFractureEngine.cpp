@@ -422,6 +422,8 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     const FractureEventReport report = s.fracture->run(q, duration);
     outcome.timings.fracture += timer.seconds() - report.solveSeconds;
     outcome.timings.bem += report.solveSeconds;
+    for (const FractureStepRecord& r : report.steps)
+        outcome.maxLoadRatio = std::max(outcome.maxLoadRatio, r.maxLoadRatio);
     const bool swept = s.fronts && s.fronts->sweptTriangles() > 0;
     if (s.fracture->cracks().triangleCount() == trianglesBefore && !swept) return outcome;  // nothing cracked
 

@@ -37,6 +37,7 @@ struct FractureStatistics {
     std::uint64_t bemBuilds = 0;         // incremented by the engine
     double engineSeconds = 0.0;          // wall time in every fracture() call, broken or not [s]
     double swapSeconds = 0.0;            // wall time restoring, swapping and separating [s]
+    double maxLoadRatio = 0.0;           // largest K_eff / K_c any crack front met, broken or not
 
     // The fracture time of the paper's Table 1 (t_f): every engine call plus the swaps. The rest
     // of a step, the replayed steps included, is rigid-body time.
@@ -81,6 +82,7 @@ struct FractureOutcome {
     std::vector<FragmentSpec> fragments;  // empty: nothing broke, the step stands as it is
     EngineTimings timings;                // optional
     int crackTriangles = 0;               // crack-sheet triangles of the body's BEM, if it has one
+    double maxLoadRatio = 0.0;            // largest K_eff / K_c over the call's crack steps
 };
 
 class FractureEngine {

@@ -580,6 +580,7 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             stats_.engineSeconds += event.info.engineSeconds;
             event.info.engineTimings = event.outcome.timings;
             event.info.crackTriangles = event.outcome.crackTriangles;
+            stats_.maxLoadRatio = std::max(stats_.maxLoadRatio, event.outcome.maxLoadRatio);
             for (std::size_t k = 0; k < event.outcome.fragments.size(); ++k)
                 validateSpec(event.outcome.fragments[k], body->originalVolume(),
                              body->name() + ": fragment " + std::to_string(k));

@@ -53,6 +53,7 @@ void writeRunRecord(const std::string& path, const RunRecord& r) {
     j["breakable_bodies"] = r.breakableBodies;
     j["fracture_events"] = r.fractureEvents;
     j["fragments"] = r.fragments;
+    j["max_k_over_kc"] = r.maxLoadRatio;
     j["peak_memory_mb"] = r.peakMemoryMegabytes;
     j["outputs"] = r.outputs;
 

@@ -2,9 +2,9 @@
 #pragma once
 // run.json: what made an output folder - program and version, source revision, command line,
 // the input files with their SHA-256, seed, threads, the options that overrode the scene, start
-// and end time, exit status, time per phase, event and fragment counts, peak memory. Written
-// last and atomically (a temporary file in the same folder, then a rename), so a folder's
-// run.json always describes a finished run whole.
+// and end time, exit status, time per phase, event and fragment counts, the largest K/K_c, peak
+// memory. Written last and atomically (a temporary file in the same folder, then a rename), so a
+// folder's run.json always describes a finished run whole.
 #include <chrono>
 #include <cstdint>
 #include <string>
@@ -40,6 +40,7 @@ struct RunRecord {
         double setup = 0.0, rigidBody = 0.0, fracture = 0.0, output = 0.0, total = 0.0;
     } seconds;
     int bodies = 0, breakableBodies = 0, fractureEvents = 0, fragments = 0;
+    double maxLoadRatio = 0.0;         // largest K_eff / K_c of any crack front (FractureStatistics)
     double peakMemoryMegabytes = 0.0;  // maximum resident set size
     std::vector<std::string> outputs;  // files written, by name or pattern
 };

@@ -491,6 +491,7 @@ int simulate(const Options& options, const Setup& setup, SceneWorld& world, cons
         record.stepsTaken = stepsTaken;
         record.bodies = static_cast<int>(world.bodies().size());
         record.fractureEvents = recorder.events();
+        record.maxLoadRatio = fractureWorld ? fractureWorld->fractureStatistics().maxLoadRatio : 0.0;
         record.seconds = {setupSeconds, stepSeconds - fractureSeconds, fractureSeconds,
                           motionSeconds + objSeconds + renderSeconds + pngSeconds, total.seconds()};
     };
@@ -604,6 +605,7 @@ int simulate(const Options& options, const Setup& setup, SceneWorld& world, cons
                                   std::to_string(breakable) + " breakable");
         summary.add("fracture events", std::to_string(record.fractureEvents));
         summary.add("fragments", std::to_string(record.fragments));
+        summary.add("largest K/K_c", format("%.3g (any crack front, before its step)", record.maxLoadRatio));
         summary.add("rigid-body time", format("%.2f s (%.3f ms per step)", t.rigidBody,
                                               stepsTaken > 0 ? 1e3 * t.rigidBody / stepsTaken : 0.0));
         summary.add("fracture time", format("%.2f s", t.fracture));

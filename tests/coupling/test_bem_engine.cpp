@@ -56,6 +56,9 @@ TEST(BemEngine, SteelBallBreaksGlassSlabConservingMassAndMomentum) {
     const FractureStatistics& stats = scene.world->fractureStatistics();
     EXPECT_EQ(stats.bemBuilds, 1u);
     EXPECT_GE(listener.pieces, 2);
+    // The slab split, so some crack front grew: K_eff > K_c there (PropagationLaw.h).
+    std::printf("glass slab: largest K/K_c %.3g\n", stats.maxLoadRatio);
+    EXPECT_GT(stats.maxLoadRatio, 1.0);
     // Mass: fragments measured on the level set (voxel 3 mm here) against the slab's exact mass;
     // dust too small to mesh is dropped (logged). Momentum: the swap itself is exact.
     const double massError = std::abs(listener.atSwap.mass - before.mass) / slabMass;
@@ -97,6 +100,7 @@ TEST(BemEngine, SlowBallBuildsNothing) {
     scene.step(60);
     EXPECT_EQ(scene.world->fractureStatistics().bemBuilds, 0u);
     EXPECT_EQ(scene.world->fractureStatistics().fractureEvents, 0u);
+    EXPECT_EQ(scene.world->fractureStatistics().maxLoadRatio, 0.0);
 }
 
 TEST(BemEngine, SameImpactTwiceGivesIdenticalFragments) {
