@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: Zlib
 // FULL stress intensity factors (Eq. 4 and the displacement correlation) against closed-form and
-// handbook solutions: one line per case with its mesh size and K_I, then
-// `METRIC <case> <relative error> ratio`. A case is a name and a function returning the relative
-// error; add one to `cases` below. Penny crack of radius a in a cube of side 8 a under tension
-// normal to it (Kassir & Sih): per ring count, the mean and worst-node K_I error and the largest
-// change of a node's K_I when the disc pattern is turned by 30 degrees (same polar angle). Then
-// both with crack elements finer than the BEM surface's (h = BEM edge, / 2, / 3).
+// handbook solutions, and EST's (§4.2-4.3) against FULL's: each case prints its lines and
+// `METRIC <name> <relative error> ratio`; add one to `cases` below. Edge crack and notched beam:
+// mesh size, K_I of FULL, EST and the handbook at mid-thickness, FULL's error and EST's
+// deviation from FULL. The edge crack grown a few steps by each method: K_I of both at
+// mid-thickness per step. Penny crack of radius a in a cube of side 8 a under tension normal to
+// it (Kassir & Sih): per ring count, the mean and worst-node K_I error and the largest change of
+// a node's K_I when the disc pattern is turned by 30 degrees (same polar angle). Then both with
+// crack elements finer than the BEM surface's (h = BEM edge, / 2, / 3).
 #include <btFracture/bem/CrackSystem.h>
 #include <btFracture/bem/ElasticSolver.h>
 #include <btFracture/fracture/CrackSeed.h>
+#include <btFracture/fracture/FractureSolver.h>
 #include <btFracture/fracture/ReferenceCracks.h>
 #include <btFracture/fracture/StressIntensity.h>
 
@@ -26,19 +29,68 @@ namespace {
 const Material kMaterial(1e9, 0.3, 1000.0, 1e7, 1e6, 2.0, "validation");
 // Elements along the crack depth, as in tests/crack (a few seconds per case).
 constexpr int kEdgeCrackElements = 4, kNotchedBeamElements = 8;
+constexpr double kPlateWidth = 0.1, kPlateTension = 1e6;  // edgeCrackCase's b [m] and sigma [Pa]
 
-// K_I at mid-thickness of a surface-breaking through crack, relative to the handbook value.
-double surfaceCrackError(const SurfaceCrackCase& c) {
-    const SurfaceCrackResult r = solveSurfaceCrack(c, kMaterial);
-    std::printf("%s: %d surface triangles, %d crack unknowns, K_I %.5g (exact %.5g)\n", c.name.c_str(),
-                r.surfaceTriangles, r.crackUnknowns, r.KI, c.exactKI);
-    return std::abs(r.KI / c.exactKI - 1.0);
+void metric(const std::string& name, double value) {
+    std::printf("METRIC %s %.4f ratio\n", name.c_str(), value);
+    std::fflush(stdout);
 }
 
-struct Case {
-    std::string metric;
-    std::function<double()> error;
-};
+// K_I at mid-thickness of a surface-breaking through crack: FULL's relative to the handbook
+// value (`fullMetric`), EST's relative to FULL's (`estMetric`).
+void surfaceCrack(const SurfaceCrackCase& c, const std::string& fullMetric, const std::string& estMetric) {
+    const SurfaceCrackResult r = solveSurfaceCrack(c, kMaterial);
+    std::printf(
+        "%s: %d surface triangles, %d crack unknowns, K_I FULL %.5g, EST %.5g (%+.1f %% of FULL), "
+        "handbook %.5g\n",
+        c.name.c_str(), r.surfaceTriangles, r.crackUnknowns, r.KI, r.estimatedKI,
+        100 * (r.estimatedKI / r.KI - 1.0), c.exactKI);
+    metric(fullMetric, std::abs(r.KI / c.exactKI - 1.0));
+    metric(estMetric, std::abs(r.estimatedKI / r.KI - 1.0));
+}
+
+// The edge crack (a/b = `ratio`) grown `steps` steps by FULL and by EST under the same tension
+// (tiny toughness, full-length steps of 0.6 h with h the sheet's element size, as the growth
+// tests): per step, the mid-thickness front node's depth and K_I of each method, FULL's against
+// the handbook value at that depth; returns the worst |EST / FULL - 1| after a step.
+double growingEdgeCrack(double ratio, int steps) {
+    const SurfaceCrackCase c = edgeCrackCase(ratio, kEdgeCrackElements);
+    const ElasticSolver solver{SurfaceMesh(c.body), kMaterial};
+    const Material growing(kMaterial.youngsModulus(), kMaterial.poissonRatio(), kMaterial.density(), 1e7, 1e3,
+                           2.0, "growing");
+    const Eigen::VectorXd q = c.tractions(solver.mesh());
+    struct Sample {
+        double depth, KI;
+    };
+    auto grow = [&](FractureMethod method) {
+        FractureSettings fs = growthSettings(method);
+        fs.crackElementSize = c.along[1] - c.along[0];
+        FractureSolver fracture(solver, MaterialField(growing), fs);
+        addSurfaceCrackSheet(fracture.cracks(), c, solver.mesh());
+        fracture.beginEvent(q);
+        std::vector<Sample> out;
+        for (int i = 0; i <= steps; ++i) {
+            const FrontSifs& f = midThicknessSifs(fracture.frontSifs(), c, solver.mesh());
+            out.push_back({(f.position + solver.mesh().offset() - c.origin).dot(c.U), f.KI});
+            if (i < steps && fracture.step(i).advancedNodes == 0) break;
+        }
+        return out;
+    };
+    const std::vector<Sample> full = grow(FractureMethod::Full), est = grow(FractureMethod::Estimated);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < std::min(full.size(), est.size()); ++i) {
+        const double e = est[i].KI / full[i].KI - 1.0;
+        std::printf(
+            "%s grown, step %zu: depth FULL %.4f m, EST %.4f m; K_I FULL %.5g (%+.1f %% of handbook), "
+            "EST %.5g (%+.1f %% of FULL)\n",
+            c.name.c_str(), i, full[i].depth, est[i].depth, full[i].KI,
+            100 * (full[i].KI / (kPlateTension * edgeCrackFactor(full[i].depth, kPlateWidth)) - 1.0),
+            est[i].KI, 100 * e);
+        std::fflush(stdout);
+        if (i > 0) worst = std::max(worst, std::abs(e));
+    }
+    return worst;
+}
 
 struct FrontKI {
     std::vector<double> angle, KI;  // sorted by polar angle
@@ -54,7 +106,8 @@ FrontKI pennyKI(const ElasticSolver& solver, const Material& material, double a,
     const CrackSystem::Solution sol = system.solve(uniformStressTractions(solver.mesh(), sigma));
     auto sifs = displacementCorrelation(system.cracks(), system.nodalOpenings(sol), material);
     for (auto& f : sifs) f.spacing = std::atan2(f.position.y(), f.position.x());  // reuse as angle
-    std::sort(sifs.begin(), sifs.end(), [](const FrontSifs& x, const FrontSifs& y) { return x.spacing < y.spacing; });
+    std::sort(sifs.begin(), sifs.end(),
+              [](const FrontSifs& x, const FrontSifs& y) { return x.spacing < y.spacing; });
     FrontKI out;
     for (const auto& f : sifs) out.angle.push_back(f.spacing), out.KI.push_back(f.KI);
     return out;
@@ -89,8 +142,10 @@ double pennyWorstNodeError() {
         }
         for (std::size_t i = 0; i < turned.KI.size(); ++i)
             turn = std::max(turn, std::abs(turned.KI[i] / interpolate(straight, turned.angle[i]) - 1.0));
-        std::printf("penny %d rings: %zu front nodes, K_I mean %+.2f %%, worst node %.2f %%, 30-degree turn %.2f %%\n",
-                    rings, straight.KI.size(), 100 * (mean - 1.0), 100 * worst, 100 * turn);
+        std::printf(
+            "penny %d rings: %zu front nodes, K_I mean %+.2f %%, worst node %.2f %%, 30-degree turn %.2f "
+            "%%\n",
+            rings, straight.KI.size(), 100 * (mean - 1.0), 100 * worst, 100 * turn);
         if (rings == 8) worst8 = worst;
     }
     return worst8;
@@ -139,18 +194,21 @@ double edgeCrackFinerThanSurfaceError(double ratio) {
 }  // namespace
 
 int main() {
-    const std::vector<Case> cases = {
-        {"edge_crack_error_0p2", [] { return surfaceCrackError(edgeCrackCase(0.2, kEdgeCrackElements)); }},
-        {"edge_crack_error_0p4", [] { return surfaceCrackError(edgeCrackCase(0.4, kEdgeCrackElements)); }},
-        {"senb_error", [] { return surfaceCrackError(notchedBeamCase(kNotchedBeamElements)); }},
-        {"penny_worst_node_error_8rings", pennyWorstNodeError},
-        {"penny_worst_node_error_h_third_of_bem_edge", pennyFinerThanSurfaceError},
-        {"edge_crack_error_0p2_h_third_of_bem_edge", [] { return edgeCrackFinerThanSurfaceError(0.2); }},
+    const std::vector<std::function<void()>> cases = {
+        [] {
+            surfaceCrack(edgeCrackCase(0.2, kEdgeCrackElements), "edge_crack_error_0p2",
+                         "est_vs_full_edge_crack_0p2");
+        },
+        [] {
+            surfaceCrack(edgeCrackCase(0.4, kEdgeCrackElements), "edge_crack_error_0p4",
+                         "est_vs_full_edge_crack_0p4");
+        },
+        [] { surfaceCrack(notchedBeamCase(kNotchedBeamElements), "senb_error", "est_vs_full_senb"); },
+        [] { metric("est_vs_full_growing_edge_crack", growingEdgeCrack(0.2, 5)); },
+        [] { metric("penny_worst_node_error_8rings", pennyWorstNodeError()); },
+        [] { metric("penny_worst_node_error_h_third_of_bem_edge", pennyFinerThanSurfaceError()); },
+        [] { metric("edge_crack_error_0p2_h_third_of_bem_edge", edgeCrackFinerThanSurfaceError(0.2)); },
     };
-    for (const Case& c : cases) {
-        const double e = c.error();
-        std::printf("METRIC %s %.4f ratio\n", c.metric.c_str(), e);
-        std::fflush(stdout);
-    }
+    for (const auto& c : cases) c();
     return 0;
 }

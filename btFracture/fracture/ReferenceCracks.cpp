@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: Zlib
-#include <btFracture/bem/CrackSystem.h>
+#include <btFracture/core/Error.h>
 #include <btFracture/core/PortableMath.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/fracture/CrackSeed.h>
+#include <btFracture/fracture/FractureSolver.h>
 #include <btFracture/fracture/ReferenceCracks.h>
 #include <btFracture/fracture/StressIntensity.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 
 namespace btfracture {
 
@@ -75,6 +75,12 @@ std::vector<double> sheetLines(double from, double to, double h, double extensio
 
 }  // namespace
 
+double edgeCrackFactor(double a, double b) {
+    const double r = a / b;
+    return std::sqrt(M_PI * a) *
+           (1.122 - 0.231 * r + 10.550 * r * r - 21.710 * std::pow(r, 3) + 30.382 * std::pow(r, 4));
+}
+
 SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension, int crackRefinement) {
     const double b = 0.1, a = ratio * b, thickness = 0.5 * b, sigma = 1e6;
     const double h = a / elementsPerDepth;
@@ -99,9 +105,7 @@ SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extens
     Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();
     stress(1, 1) = sigma;
     c.tractions = [stress](const SurfaceMesh& mesh) { return uniformStressTractions(mesh, stress); };
-    const double F = 1.122 - 0.231 * ratio + 10.550 * ratio * ratio - 21.710 * std::pow(ratio, 3) +
-                     30.382 * std::pow(ratio, 4);
-    c.exactKI = sigma * std::sqrt(M_PI * a) * F;
+    c.exactKI = sigma * edgeCrackFactor(a, b);
     return c;
 }
 
@@ -159,31 +163,43 @@ SurfaceCrackCase notchedBeamCase(int elementsPerDepth, double extension) {
     return c;
 }
 
-SurfaceCrackResult solveSurfaceCrack(const SurfaceCrackCase& c, const Material& material) {
-    const ElasticSolver solver{SurfaceMesh(c.body), material};
-    const Eigen::Vector3d shift = -solver.mesh().offset();
-    CrackMesh cracks;
+void addSurfaceCrackSheet(CrackMesh& cracks, const SurfaceCrackCase& c, const SurfaceMesh& body) {
     std::vector<std::vector<int>> node(c.along.size(), std::vector<int>(c.across.size()));
     for (std::size_t i = 0; i < c.along.size(); ++i)
         for (std::size_t j = 0; j < c.across.size(); ++j)
-            node[i][j] = cracks.addNode(c.origin + c.along[i] * c.U + c.across[j] * c.V + shift);
+            node[i][j] = cracks.addNode(c.origin + c.along[i] * c.U + c.across[j] * c.V - body.offset());
     for (std::size_t i = 0; i + 1 < c.along.size(); ++i)
         for (std::size_t j = 0; j + 1 < c.across.size(); ++j) {
             cracks.addTriangle(node[i][j], node[i + 1][j], node[i + 1][j + 1]);
             cracks.addTriangle(node[i][j], node[i + 1][j + 1], node[i][j + 1]);
         }
-    CrackSystem system(solver, cracks);
-    system.update();
-    const CrackSystem::Solution s = system.solve(c.tractions(solver.mesh()));
-    const auto sifs = displacementCorrelation(cracks, system.nodalOpenings(s), material);
+}
+
+const FrontSifs& midThicknessSifs(const std::vector<FrontSifs>& sifs, const SurfaceCrackCase& c,
+                                  const SurfaceMesh& body) {
+    if (sifs.empty()) throw Error(c.name + ": the crack has no front");
+    auto across = [&](const FrontSifs& f) {
+        return std::abs((f.position + body.offset() - c.origin).dot(c.V));
+    };
+    return *std::min_element(sifs.begin(), sifs.end(),
+                             [&](const FrontSifs& x, const FrontSifs& y) { return across(x) < across(y); });
+}
+
+SurfaceCrackResult solveSurfaceCrack(const SurfaceCrackCase& c, const Material& material) {
+    const ElasticSolver solver{SurfaceMesh(c.body), material};
+    const Eigen::VectorXd q = c.tractions(solver.mesh());
     SurfaceCrackResult out;
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const FrontSifs& f : sifs) {
-        const double d = (f.position - shift - c.midFront).norm();
-        if (d < nearest) nearest = d, out.KI = f.KI;
+    for (const FractureMethod method : {FractureMethod::Full, FractureMethod::Estimated}) {
+        FractureSettings fs;
+        fs.method = method;
+        FractureSolver fracture(solver, MaterialField(material), fs);
+        addSurfaceCrackSheet(fracture.cracks(), c, solver.mesh());
+        fracture.beginEvent(q);
+        const double K = midThicknessSifs(fracture.frontSifs(), c, solver.mesh()).KI;
+        (method == FractureMethod::Full ? out.KI : out.estimatedKI) = K;
+        out.crackUnknowns = fracture.cracks().unknownCount();
     }
     out.surfaceTriangles = solver.mesh().triangleCount();
-    out.crackUnknowns = cracks.unknownCount();
     return out;
 }
 

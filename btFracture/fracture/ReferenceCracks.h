@@ -10,6 +10,7 @@
 #include <btFracture/core/FractureSettings.h>
 #include <btFracture/core/Material.h>
 #include <btFracture/core/TriangleMesh.h>
+#include <btFracture/fracture/StressIntensity.h>
 
 #include <Eigen/Core>
 
@@ -35,9 +36,9 @@ PennyCrackSifs pennyCrackSifs(double stress, double radius, double alpha, double
 // large enough that the free surface changes K_I by about 1 %.
 TriangleMesh pennyCrackCube(double radius, int cells = 6);
 
-// Surface-breaking through cracks, solved by FULL: a planar sheet from the body's surface to a
-// straight front across the whole thickness, poking `extension` elements past the surface (0:
-// ending on it). K_I is read at the front node nearest mid-thickness.
+// Surface-breaking through cracks: a planar sheet from the body's surface to a straight front
+// across the whole thickness, poking `extension` elements past the surface (0: ending on it).
+// K_I is read at the front node nearest mid-thickness.
 struct SurfaceCrackCase {
     std::string name;
     TriangleMesh body;  // in the case's own coordinates
@@ -50,11 +51,11 @@ struct SurfaceCrackCase {
     double exactKI = 0.0;  // [Pa m^(1/2)]
 };
 
-// Plate of width b (x), height 4 b (y) and thickness b/2 (z) under uniform tension sigma along y,
-// straight edge crack of depth a = ratio b from the face x = 0; h = a / elementsPerDepth on the
-// surface near the crack, h / crackRefinement on the crack (the mouth then has sheet nodes
-// between surface nodes, held shut). Exact: sigma sqrt(pi a) F(a/b) (Tada's fit, 0.5 % for
-// a/b <= 0.6).
+// Plate of width b = 10 cm (x), height 4 b (y) and thickness b/2 (z) under uniform tension
+// sigma = 1 MPa along y, straight edge crack of depth a = ratio b from the face x = 0;
+// h = a / elementsPerDepth on the surface near the crack, h / crackRefinement on the crack (the
+// mouth then has sheet nodes between surface nodes, held shut). Exact: sigma sqrt(pi a) F(a/b)
+// (Tada's fit, 0.5 % for a/b <= 0.6; edgeCrackFactor).
 SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension = 0.0,
                                int crackRefinement = 1);
 // ASTM E399 single-edge-notched beam in three-point bending: depth W (y), span S = 4 W, thickness
@@ -62,8 +63,21 @@ SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extens
 // support; h = a / elementsPerDepth near the crack. Exact: P S / (B W^1.5) f(a/W).
 SurfaceCrackCase notchedBeamCase(int elementsPerDepth, double extension = 0.0);
 
+// K_I / sigma = F(a/b) sqrt(pi a) of an edge crack of depth a in a plate of width b under
+// tension sigma (Tada's fit) [m^(1/2)].
+double edgeCrackFactor(double a, double b);
+
+// Adds the case's sheet to `cracks`, in the frame of `body` (the case's body; its offset taken off).
+void addSurfaceCrackSheet(CrackMesh& cracks, const SurfaceCrackCase& c, const SurfaceMesh& body);
+// Of the SIFs `sifs` of the case's sheet in `body`'s frame (grown or not), the front node
+// nearest mid-thickness (across coordinate 0).
+const FrontSifs& midThicknessSifs(const std::vector<FrontSifs>& sifs, const SurfaceCrackCase& c,
+                                  const SurfaceMesh& body);
+
 struct SurfaceCrackResult {
-    double KI = 0.0;  // FULL, displacement correlation at the front node nearest mid-thickness
+    // At the front node nearest mid-thickness: FULL (Eq. 4, displacement correlation) and EST
+    // (§4.2 from the crack-free local stress, as at the start of an event: no front has moved).
+    double KI = 0.0, estimatedKI = 0.0;
     int surfaceTriangles = 0, crackUnknowns = 0;
 };
 SurfaceCrackResult solveSurfaceCrack(const SurfaceCrackCase& c, const Material& material);

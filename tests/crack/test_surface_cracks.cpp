@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Zlib
-// Surface-breaking cracks in FULL (bench/sif_validation's cases): the mouth opens, and K_I at
-// mid-thickness matches the handbook values, which are checked against the published tables.
+// Surface-breaking cracks (bench/sif_validation's cases): in FULL the mouth opens and K_I at
+// mid-thickness matches the handbook values, which are checked against the published tables; EST
+// gives the embedded crack's estimate there.
 #include <btFracture/fracture/ReferenceCracks.h>
 
 #include <gtest/gtest.h>
@@ -14,27 +15,36 @@ namespace {
 
 const Material kMaterial(1e9, 0.3, 1000.0, 1e7, 1e6, 2.0, "test");
 
-double relativeError(const SurfaceCrackCase& c) {
+SurfaceCrackResult solve(const SurfaceCrackCase& c) {
     const SurfaceCrackResult r = solveSurfaceCrack(c, kMaterial);
-    std::printf("%s: %d surface triangles, %d crack unknowns, K_I / exact %.4f\n", c.name.c_str(),
-                r.surfaceTriangles, r.crackUnknowns, r.KI / c.exactKI);
-    return r.KI / c.exactKI - 1.0;
+    std::printf("%s: %d surface triangles, %d crack unknowns, K_I FULL / exact %.4f, EST / FULL %.3f\n",
+                c.name.c_str(), r.surfaceTriangles, r.crackUnknowns, r.KI / c.exactKI, r.estimatedKI / r.KI);
+    return r;
 }
 
 }  // namespace
 
-// Through edge crack, 4 elements along the depth: measured +2.5 % (a/b = 0.2) and +5.1 % (0.4);
-// at 8 elements +4.2 % and +6.5 % (the mid-thickness K_I of the 3D plate sits a few per cent above
-// the plane-strain handbook value, and the displacement correlation reads high, as for the penny).
-// With the mouth held shut the same meshes gave 0.58 and 0.35 of the exact value.
-TEST(SurfaceCrack, EdgeCrackInTensionMatchesTada) {
-    EXPECT_NEAR(relativeError(edgeCrackCase(0.2, 4)), 0.0, 0.05);
-    EXPECT_NEAR(relativeError(edgeCrackCase(0.4, 4)), 0.0, 0.06);
+// Through edge crack, 4 elements along the depth. FULL: measured +2.5 % (a/b = 0.2) and +5.1 %
+// (0.4); at 8 elements +4.2 % and +6.5 % (the mid-thickness K_I of the 3D plate sits a few per cent
+// above the plane-strain handbook value, and the displacement correlation reads high, as for the
+// penny). With the mouth held shut the same meshes gave 0.58 and 0.35 of the exact value.
+// EST, no front moved yet: §4.2 from the crack-free local stress (no §4.3 update), K_I =
+// (2/pi) sigma (pi A)^(1/4) with the sheet's whole area A = a b/2 - an embedded crack's estimate,
+// whatever the mouth does (measured: 1.0003 and 1.0001 of it; 0.43 and 0.23 of FULL's K_I).
+TEST(SurfaceCrack, EdgeCrackFullMatchesTadaEstIsEmbedded) {
+    for (const auto& [ratio, tolerance] : {std::pair{0.2, 0.05}, std::pair{0.4, 0.06}}) {
+        const SurfaceCrackCase c = edgeCrackCase(ratio, 4);
+        const SurfaceCrackResult r = solve(c);
+        EXPECT_NEAR(r.KI / c.exactKI, 1.0, tolerance) << c.name;
+        const double area = ratio * 0.1 * 0.05;
+        EXPECT_NEAR(r.estimatedKI / (2.0 / M_PI * 1e6 * std::pow(M_PI * area, 0.25)), 1.0, 0.01) << c.name;
+    }
 }
 
 // ASTM E399 notched beam, 8 elements along the depth: measured +3.4 % (+13 % at 4, +9 % at 6).
 TEST(SurfaceCrack, NotchedBeamInBendingMatchesAstm) {
-    EXPECT_NEAR(relativeError(notchedBeamCase(8)), 0.0, 0.05);
+    const SurfaceCrackCase c = notchedBeamCase(8);
+    EXPECT_NEAR(solve(c).KI / c.exactKI, 1.0, 0.05);
 }
 
 TEST(SurfaceCrackCases, HandbookValuesMatchThePublishedTables) {
