@@ -29,7 +29,6 @@ namespace {
 const Material kMaterial(1e9, 0.3, 1000.0, 1e7, 1e6, 2.0, "validation");
 // Elements along the crack depth, as in tests/crack (a few seconds per case).
 constexpr int kEdgeCrackElements = 4, kNotchedBeamElements = 8;
-constexpr double kPlateWidth = 0.1, kPlateTension = 1e6;  // edgeCrackCase's b [m] and sigma [Pa]
 
 void metric(const std::string& name, double value) {
     std::printf("METRIC %s %.4f ratio\n", name.c_str(), value);
@@ -84,7 +83,8 @@ double growingEdgeCrack(double ratio, int steps) {
             "%s grown, step %zu: depth FULL %.4f m, EST %.4f m; K_I FULL %.5g (%+.1f %% of handbook), "
             "EST %.5g (%+.1f %% of FULL)\n",
             c.name.c_str(), i, full[i].depth, est[i].depth, full[i].KI,
-            100 * (full[i].KI / (kPlateTension * edgeCrackFactor(full[i].depth, kPlateWidth)) - 1.0),
+            100 * (full[i].KI / (kEdgeCrackTension * edgeCrackFactor(full[i].depth, kEdgeCrackPlateWidth)) -
+                   1.0),
             est[i].KI, 100 * e);
         std::fflush(stdout);
         if (i > 0) worst = std::max(worst, std::abs(e));
