@@ -3,63 +3,141 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <set>
 
 namespace btfracture {
+namespace {
 
-std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Eigen::VectorXd& cod,
-                                               const Material& material) {
-    const double Ep = material.planeStrainModulus(), mu = material.shearModulus();
+// The fit window, in units of the node's front spacing h: crack nodes between kNearRow and
+// kFarRow from the front, within kAlong of the node along it (hat-weighted); on a front of
+// curvature kappa > 0 no farther than kCurvedReach / kappa (the profile's curvature term then
+// stays below 20 %; measured on the penny at 4 / 6 / 8 rings, mean K_I -3.9 / -0.25 / -0.08 %).
+constexpr double kNearRow = 1.5, kFarRow = 4.5, kAlong = 2.5, kCurvedReach = 0.75, kResolvedRows = 2.5;
+
+double segmentDistance(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    const Eigen::Vector3d ab = b - a;
+    const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    return (x - a - t * ab).norm();
+}
+
+// Frames and spacings per front node, averaged over its front edges; `edgesAtNode` lists the
+// front edges at each front node.
+std::vector<FrontSifs> frontFrames(const CrackMesh& cracks, std::map<int, std::vector<int>>& edgesAtNode) {
     struct Sum {
-        FrontSifs sifs;
         Eigen::Vector3d ahead = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
+        double spacing = 0.0;
         int edges = 0;
     };
     std::map<int, Sum> perNode;
-    for (const auto& e : cracks.frontEdges()) {
-        const auto& tri = cracks.triangle(e.triangle);
-        int c = tri[0];
-        for (int v : tri)
-            if (v != e.a && v != e.b) c = v;
-        const Eigen::Vector3d a = cracks.node(e.a), b = cracks.node(e.b), behind = cracks.node(c);
-        const Eigen::Vector3d s = (b - a).normalized();
+    const auto& front = cracks.frontEdges();
+    for (int i = 0; i < static_cast<int>(front.size()); ++i) {
+        const auto& e = front[i];
+        const Eigen::Vector3d a = cracks.node(e.a), b = cracks.node(e.b);
         const Eigen::Vector3d n = cracks.normal(e.triangle);
-        const Eigen::Vector3d m = s.cross(n);  // the interior lies on n x s, so this points ahead
-        const Eigen::Vector3d toBehind = behind - a;
-        const double r = (toBehind - toBehind.dot(s) * s).norm();
-        const Eigen::Vector3d jump = cod.segment<3>(3 * c);
-        const double scale = std::sqrt(2.0 * M_PI / r);
-        const double KI = Ep / 8.0 * scale * jump.dot(n);
-        const double KII = Ep / 8.0 * scale * jump.dot(m);
-        const double KIII = mu / 4.0 * scale * jump.dot(m.cross(n));
+        const Eigen::Vector3d m = (b - a).normalized().cross(n);  // the interior lies on n x s
         for (int v : {e.a, e.b}) {
             Sum& sum = perNode[v];
-            sum.sifs.KI += KI;
-            sum.sifs.KII += KII;
-            sum.sifs.KIII += KIII;
-            sum.sifs.spacing += (b - a).norm();
+            sum.spacing += (b - a).norm();
             sum.ahead += m;
             sum.normal += n;
             ++sum.edges;
+            edgesAtNode[v].push_back(i);
         }
     }
     std::vector<FrontSifs> out;
     out.reserve(perNode.size());
-    for (auto& [node, sum] : perNode) {
-        FrontSifs f = sum.sifs;
+    for (const auto& [node, sum] : perNode) {
+        FrontSifs f;
         f.node = node;
         f.position = cracks.node(node);
-        const double w = 1.0 / sum.edges;
-        f.KI *= w;
-        f.KII *= w;
-        f.KIII *= w;
-        f.spacing *= w;
+        f.spacing = sum.spacing / sum.edges;
         f.frame.normal = sum.normal.normalized();
         f.frame.ahead = (sum.ahead - sum.ahead.dot(f.frame.normal) * f.frame.normal).normalized();
         f.frame.tangent = f.frame.ahead.cross(f.frame.normal);
-        f.compressive = f.KI < 0.0;
         out.push_back(f);
+    }
+    return out;
+}
+
+// In-plane curvature of the front at node f (the circle through it and its two front
+// neighbours), positive where the crack is convex (the centre lies behind the front).
+double frontCurvature(const CrackMesh& cracks, const FrontSifs& f, const std::vector<int>& edges) {
+    if (edges.size() != 2) return 0.0;
+    const auto& front = cracks.frontEdges();
+    Eigen::Vector3d before = f.position, after = f.position;
+    for (int i : edges) {
+        if (front[i].a == f.node) after = cracks.node(front[i].b);
+        if (front[i].b == f.node) before = cracks.node(front[i].a);
+    }
+    const Eigen::Vector3d a = before - f.position, b = after - f.position;
+    const double denominator = a.norm() * b.norm() * (after - before).norm();
+    if (!(denominator > 0.0)) return 0.0;
+    const double kappa = 2.0 * a.cross(b).norm() / denominator;
+    return (a + b).dot(f.frame.ahead) > 0.0 ? -kappa : kappa;
+}
+
+}  // namespace
+
+std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Eigen::VectorXd& cod,
+                                               const Material& material) {
+    const double Ep = material.planeStrainModulus(), mu = material.shearModulus();
+    std::map<int, std::vector<int>> edgesAtNode;
+    std::vector<FrontSifs> out = frontFrames(cracks, edgesAtNode);
+    if (cod.size() == 0 || cod.isZero(0.0)) return out;  // frames only (EST)
+    const auto& front = cracks.frontEdges();
+    for (FrontSifs& f : out) {
+        const double kappa = frontCurvature(cracks, f, edgesAtNode[f.node]);
+        const double h = f.spacing, along = kAlong * h,
+                     reach = kappa > 0.0 ? std::min(kFarRow * h, kCurvedReach / kappa) : kFarRow * h;
+        // Crack nodes near f (grown across the sheet from f's triangles while within 5.5 h),
+        // and the front edges among their triangles.
+        std::set<int> region, nearFront, nodes;
+        std::vector<int> queue(cracks.trianglesAtNode(f.node).begin(), cracks.trianglesAtNode(f.node).end());
+        region.insert(queue.begin(), queue.end());
+        for (std::size_t q = 0; q < queue.size(); ++q)
+            for (int v : cracks.triangle(queue[q])) {
+                if (const auto it = edgesAtNode.find(v); it != edgesAtNode.end())
+                    nearFront.insert(it->second.begin(), it->second.end());
+                if (!cracks.isFront(v)) nodes.insert(v);
+                if ((cracks.node(v) - f.position).norm() > (kFarRow + 1.0) * h) continue;
+                for (int t : cracks.trianglesAtNode(v))
+                    if (region.insert(t).second) queue.push_back(t);
+            }
+        // One-parameter least squares per mode: cod = c K sqrt(r / 2 pi) sqrt(1 - kappa r / 2)
+        // over the nodes in the window (c = 8 / E' for modes I and II, 4 / mu for mode III).
+        auto fit = [&](double near, double far, double curvature) {
+            double gg = 0.0;
+            Eigen::Vector3d gc = Eigen::Vector3d::Zero();
+            for (int v : nodes) {
+                const Eigen::Vector3d x = cracks.node(v);
+                double r = std::numeric_limits<double>::infinity();
+                for (int i : nearFront)
+                    r = std::min(r, segmentDistance(x, cracks.node(front[i].a), cracks.node(front[i].b)));
+                const double s = std::abs((x - f.position).dot(f.frame.tangent));
+                if (!(r > near) || r > far || s >= along) continue;
+                const double w = 1.0 - s / along;
+                const double g = std::sqrt(r / (2.0 * M_PI) * std::max(0.1, 1.0 - 0.5 * curvature * r));
+                const Eigen::Vector3d jump = cod.segment<3>(3 * v);
+                gg += w * g * g;
+                gc += w * g * Eigen::Vector3d(jump.dot(f.frame.normal), jump.dot(f.frame.ahead),
+                                              jump.dot(f.frame.tangent));
+            }
+            return gg > 0.0 ? Eigen::Vector3d(gc / gg) : Eigen::Vector3d(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+        };
+        // A front resolved by fewer than kResolvedRows rows within the reach (a young or strongly
+        // curved sheet), or with no node in the window: the first row, straight-front profile.
+        Eigen::Vector3d k = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+        if (reach >= kResolvedRows * h) k = fit(kNearRow * h, reach, kappa);
+        if (!k.allFinite()) k = fit(0.0, kNearRow * h, 0.0);
+        if (!k.allFinite()) k.setZero();
+        f.KI = Ep / 8.0 * k(0);
+        f.KII = Ep / 8.0 * k(1);
+        f.KIII = mu / 4.0 * k(2);
+        f.compressive = f.KI < 0.0;
     }
     return out;
 }

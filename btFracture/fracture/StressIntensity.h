@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Zlib
 #pragma once
 // Stress intensity factors along crack fronts. FULL method (paper §3): displacement
-// correlation (Ingraffea & Wawrzynek 2003) of the BEM crack opening at the node behind each
-// front edge, in the front's local frame (paper Fig. 2b).
+// correlation (Ingraffea & Wawrzynek 2003) of the BEM crack opening, fitted over the crack nodes
+// a few rows behind each front node, in the front's local frame (paper Fig. 2b).
 #include <btFracture/bem/CrackMesh.h>
 #include <btFracture/core/Material.h>
 
@@ -29,15 +29,24 @@ struct FrontSifs {
     bool compressive = false;
 };
 
-// Per front node, averaged over its front edges. `nodalOpenings` holds COD = u+ - u- at every
-// crack node (3 per node, zero on the front). Plane strain E' = E / (1 - nu^2):
-//   K_I = E'/8 sqrt(2 pi / r) cod.n,  K_II = E'/8 sqrt(2 pi / r) cod.m,  K_III = mu/4 sqrt(2 pi / r) cod.t
-// with r the distance of the correlation node from the front edge.
+// Per front node: frame and spacing h averaged over its front edges, SIFs from a weighted least-
+// squares fit of the opening at the crack nodes between 1.5 h and 4.5 h from the front (nearest
+// front edge; on a convex front at most 0.75 / kappa) and within 2.5 h along it (hat weight) to
+// the near-front profile of a front with in-plane curvature kappa (the penny's exact profile):
+//   cod.n = 8/E' K_I g,  cod.m = 8/E' K_II g,  cod.t = 4/mu K_III g,  g = sqrt(r/2pi (1 - kappa r/2))
+// with E' = E / (1 - nu^2). The nodes nearest the front are left out: there the P1 opening of
+// the Galerkin solution is off the sqrt profile by a fixed fraction at any refinement (measured
+// on the penny: +5 % in the first row, -1 % in the second, < 0.5 % beyond), so correlating them
+// does not converge. A front whose window reaches less than 2.5 h
+// (curvature radius below 3.3 h: a young sheet) or holds no node correlates its first row
+// (within 1.5 h) with the straight-front profile (kappa = 0), as the unfitted correlation does.
+// `nodalOpenings` holds COD = u+ - u- at every crack node (3 per node, zero on the front); all
+// zero gives the frames alone (SIFs zero).
 std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Eigen::VectorXd& nodalOpenings,
                                                const Material& material);
 
-// Inverse of the correlation (used by the estimator's update, §4.3): the opening a front that
-// has advanced by `distance` d leaves at its old position, cod = 2 K c sqrt(2 d) / (mu sqrt(pi))
+// Inverse of the correlation for a straight front (used by the estimator's update, §4.3): the
+// opening a front that has advanced by `distance` d leaves at its old position, cod = 2 K c sqrt(2 d) / (mu sqrt(pi))
 // per mode with c = 1 - nu for modes I and II and c = 1 for mode III, in the given frame. The
 // paper's formula has no factor 2: it gives the displacement of one crack face, while the
 // opening (what the COD unknowns and displacementCorrelation use) is the jump between both.

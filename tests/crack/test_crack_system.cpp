@@ -14,8 +14,11 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 using namespace btfracture;
 
@@ -91,35 +94,65 @@ TEST(CrackSystem, SurfaceOnlyCouplingIsTheSameC) {
     EXPECT_EQ(both.G.rows(), 3 * cracks.unknownCount());
 }
 
-TEST(CrackSystem, PennyCrackUnderTension) {
+TEST(CrackSystem, PennyCrackConvergesOnAnyDiscPattern) {
     // Penny crack of radius a centred in a cube of side 8a, uniaxial tension sigma normal to it,
-    // four rings of elements (h = a / 4). Displacement correlation with P1 openings is biased
-    // high by a few per cent and peaks where the hexagonal disc mesh is most stretched (see the
-    // closing notes: +1.5 % mean / 3.6 % worst here, +2.5 % / 5.7 % at six rings).
+    // 4, 6 and 8 rings of elements (h = a / rings). The fitted correlation converges: mean and
+    // worst-node K_I error fall with every refinement, the worst node is within 2 % at 8 rings
+    // (measured -3.9 / -0.25 / -0.08 % mean, 5.0 / 0.30 / 0.17 % worst), and turning the disc
+    // pattern by 30 degrees changes no node's K_I by more than 1 % (measured 0.2 %), compared
+    // with the unturned front at the same polar angle.
     const double a = 0.05, s = 1e6;
     const ElasticSolver solver(SurfaceMesh(pennyCrackCube(a)), kMaterial);
-    CrackMesh cracks;
-    CrackSystem system(solver, cracks);
-    addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), a, 4);
-    system.update();
     Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
     sigma(2, 2) = s;
-    const CrackSystem::Solution sol = system.solve(uniformStressTractions(solver.mesh(), sigma));
-    const auto sifs = displacementCorrelation(system.cracks(), system.nodalOpenings(sol), kMaterial);
+    const Eigen::VectorXd q = uniformStressTractions(solver.mesh(), sigma);
     const double exact = pennyCrackSifs(s, a, M_PI / 2, kMaterial.poissonRatio()).KI;
-    double mean = 0.0, worst = 0.0, shear = 0.0;
-    for (const auto& f : sifs) {
-        mean += f.KI / sifs.size();
-        worst = std::max(worst, std::abs(f.KI / exact - 1.0));
-        shear = std::max({shear, std::abs(f.KII), std::abs(f.KIII)});
+    // (polar angle, K_I, max(|K_II|, |K_III|)) per front node, by angle.
+    auto front = [&](int rings, double rotation) {
+        CrackMesh cracks;
+        CrackSystem system(solver, cracks);
+        addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), a, rings, rotation);
+        system.update();
+        const CrackSystem::Solution sol = system.solve(q);
+        std::vector<std::array<double, 3>> out;
+        for (const auto& f : displacementCorrelation(system.cracks(), system.nodalOpenings(sol), kMaterial))
+            out.push_back({std::atan2(f.position.y(), f.position.x()), f.KI, std::max(std::abs(f.KII), std::abs(f.KIII))});
+        std::sort(out.begin(), out.end());
+        return out;
+    };
+    std::vector<double> means, worsts;
+    for (int rings : {4, 6, 8}) {
+        double mean = 0.0, worst = 0.0, shear = 0.0;
+        const auto sifs = front(rings, 0.0);
+        for (const auto& f : sifs) {
+            mean += (f[1] / exact - 1.0) / sifs.size();
+            worst = std::max(worst, std::abs(f[1] / exact - 1.0));
+            shear = std::max(shear, f[2] / exact);
+        }
+        std::printf("penny %d rings: %zu front nodes, K_I mean %+.2f %%, worst node %.2f %%, max |K_II|,|K_III| %.2f %%\n",
+                    rings, sifs.size(), 100 * mean, 100 * worst, 100 * shear);
+        EXPECT_LT(shear, 0.03);
+        means.push_back(std::abs(mean));
+        worsts.push_back(worst);
     }
-    std::printf(
-        "penny: %zu front nodes, K_I mean %.4f of exact, worst node %.2f %%, max |K_II|,|K_III| %.2f %% of "
-        "K_I\n",
-        sifs.size(), mean / exact, 100 * worst, 100 * shear / exact);
-    EXPECT_NEAR(mean / exact, 1.0, 0.03);
-    EXPECT_LT(worst, 0.06);
-    EXPECT_LT(shear / exact, 0.03);
+    EXPECT_LT(means[1], means[0]);
+    EXPECT_LT(means[2], means[1]);
+    EXPECT_LT(worsts[1], worsts[0]);
+    EXPECT_LT(worsts[2], worsts[1]);
+    EXPECT_LT(worsts[2], 0.02);
+    const auto straight = front(8, 0.0), turned = front(8, M_PI / 6);
+    double turn = 0.0;
+    for (const auto& f : turned) {  // the unturned K_I at f's angle, linear between its nodes
+        auto next = std::upper_bound(straight.begin(), straight.end(), f,
+                                     [](const auto& x, const auto& y) { return x[0] < y[0]; });
+        const auto& hi = next == straight.end() ? straight.front() : *next;
+        const auto& lo = next == straight.begin() ? straight.back() : *(next - 1);
+        const double span = std::remainder(hi[0] - lo[0], 2 * M_PI), at = std::remainder(f[0] - lo[0], 2 * M_PI);
+        const double K = lo[1] + (hi[1] - lo[1]) * at / span;
+        turn = std::max(turn, std::abs(f[1] / K - 1.0));
+    }
+    std::printf("penny 8 rings turned by 30 degrees: K_I changes by at most %.2f %%\n", 100 * turn);
+    EXPECT_LT(turn, 0.01);
 }
 
 // Same input, same output on any machine: the penny's BEM factorisation, crack blocks and Schur
@@ -155,7 +188,7 @@ TEST(CrackSystem, InclinedPennyCrackMatchesKassirSih) {
     const Eigen::Vector3d normal(std::sin(alpha), 0.0, std::cos(alpha));
     CrackMesh cracks;
     CrackSystem system(solver, cracks);
-    addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), normal, a, 4);
+    addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), normal, a, 6);
     system.update();
     Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
     sigma(2, 2) = s;
