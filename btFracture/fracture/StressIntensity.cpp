@@ -13,10 +13,13 @@ namespace btfracture {
 namespace {
 
 // The fit window, in units of the node's front spacing h: crack nodes between kNearRow and
-// kFarRow from the front, within kAlong of the node along it (hat-weighted); on a front of
-// curvature kappa > 0 no farther than kCurvedReach / kappa (the profile's curvature term then
-// stays below 20 %; measured on the penny at 4 / 6 / 8 rings, mean K_I -3.9 / -0.25 / -0.08 %).
-constexpr double kNearRow = 1.5, kFarRow = 4.5, kAlong = 2.5, kCurvedReach = 0.75, kResolvedRows = 2.5;
+// kFarRow from the front, within kAlong of the node along it (hat-weighted); on a convex front
+// of curvature kappa no farther than kCurvedReach / kappa (the profile's curvature term then
+// stays below 20 %), and never farther than kSizeReach times the sheet's extent behind the node
+// (inside the square-root zone of a straight front: a notched beam's fit over half its crack
+// depth is +15 %). Fronts whose window reaches less than kResolvedRows h keep the first row.
+constexpr double kNearRow = 1.5, kFarRow = 4.5, kAlong = 2.5, kCurvedReach = 0.75, kSizeReach = 0.25,
+                 kResolvedRows = 2.5;
 
 double segmentDistance(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     const Eigen::Vector3d ab = b - a;
@@ -80,6 +83,53 @@ double frontCurvature(const CrackMesh& cracks, const FrontSifs& f, const std::ve
     return (a + b).dot(f.frame.ahead) > 0.0 ? -kappa : kappa;
 }
 
+
+// First-row correlation (straight-front profile): per front edge, the opening at the node
+// opposite it at its distance r from the edge, averaged per front node over its edges.
+std::map<int, Eigen::Vector3d> firstRowOpenings(const CrackMesh& cracks, const Eigen::VectorXd& cod) {
+    std::map<int, std::pair<Eigen::Vector3d, int>> sum;  // sum of cod / g in the node's frame
+    for (const auto& e : cracks.frontEdges()) {
+        const auto& tri = cracks.triangle(e.triangle);
+        int c = tri[0];
+        for (int v : tri)
+            if (v != e.a && v != e.b) c = v;
+        const Eigen::Vector3d a = cracks.node(e.a), b = cracks.node(e.b), toBehind = cracks.node(c) - a;
+        const Eigen::Vector3d s = (b - a).normalized(), n = cracks.normal(e.triangle), m = s.cross(n);
+        const double g = std::sqrt((toBehind - toBehind.dot(s) * s).norm() / (2.0 * M_PI));
+        const Eigen::Vector3d jump = cod.segment<3>(3 * c);
+        const Eigen::Vector3d k(jump.dot(n) / g, jump.dot(m) / g, jump.dot(m.cross(n)) / g);
+        for (int v : {e.a, e.b}) {
+            auto& entry = sum.try_emplace(v, Eigen::Vector3d::Zero(), 0).first->second;
+            entry.first += k;
+            ++entry.second;
+        }
+    }
+    std::map<int, Eigen::Vector3d> out;
+    for (const auto& [node, entry] : sum) out[node] = entry.first / entry.second;
+    return out;
+}
+
+// Per front node: how far its sheet reaches behind it, max over the sheet's nodes x of
+// (f - x) . ahead [m].
+std::map<int, double> extentBehind(const CrackMesh& cracks, const std::vector<FrontSifs>& frames) {
+    std::vector<std::vector<int>> nodesOfSheet(cracks.sheetCount());
+    std::vector<int> sheetOfNode(cracks.nodeCount(), -1);
+    for (int t = 0; t < cracks.triangleCount(); ++t)
+        for (int v : cracks.triangle(t))
+            if (sheetOfNode[v] < 0) {
+                sheetOfNode[v] = cracks.sheetOf(t);
+                nodesOfSheet[sheetOfNode[v]].push_back(v);
+            }
+    std::map<int, double> out;
+    for (const FrontSifs& f : frames) {
+        double extent = 0.0;
+        for (int v : nodesOfSheet[sheetOfNode[f.node]])
+            extent = std::max(extent, (f.position - cracks.node(v)).dot(f.frame.ahead));
+        out[f.node] = extent;
+    }
+    return out;
+}
+
 }  // namespace
 
 std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Eigen::VectorXd& cod,
@@ -89,10 +139,13 @@ std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Ei
     std::vector<FrontSifs> out = frontFrames(cracks, edgesAtNode);
     if (cod.size() == 0 || cod.isZero(0.0)) return out;  // frames only (EST)
     const auto& front = cracks.frontEdges();
+    const std::map<int, Eigen::Vector3d> firstRow = firstRowOpenings(cracks, cod);
+    const std::map<int, double> extent = extentBehind(cracks, out);
     for (FrontSifs& f : out) {
         const double kappa = frontCurvature(cracks, f, edgesAtNode[f.node]);
-        const double h = f.spacing, along = kAlong * h,
-                     reach = kappa > 0.0 ? std::min(kFarRow * h, kCurvedReach / kappa) : kFarRow * h;
+        const double h = f.spacing, along = kAlong * h;
+        double reach = std::min(kFarRow * h, kSizeReach * extent.at(f.node));
+        if (kappa > 0.0) reach = std::min(reach, kCurvedReach / kappa);
         // Crack nodes near f (grown across the sheet from f's triangles while within 5.5 h),
         // and the front edges among their triangles.
         std::set<int> region, nearFront, nodes;
@@ -128,12 +181,11 @@ std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Ei
             }
             return gg > 0.0 ? Eigen::Vector3d(gc / gg) : Eigen::Vector3d(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
         };
-        // A front resolved by fewer than kResolvedRows rows within the reach (a young or strongly
-        // curved sheet), or with no node in the window: the first row, straight-front profile.
+        // A front resolved by fewer than kResolvedRows rows within the reach (a small, young or
+        // strongly curved sheet), or with no node in the window: the first row.
         Eigen::Vector3d k = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
         if (reach >= kResolvedRows * h) k = fit(kNearRow * h, reach, kappa);
-        if (!k.allFinite()) k = fit(0.0, kNearRow * h, 0.0);
-        if (!k.allFinite()) k.setZero();
+        if (!k.allFinite()) k = firstRow.at(f.node);
         f.KI = Ep / 8.0 * k(0);
         f.KII = Ep / 8.0 * k(1);
         f.KIII = mu / 4.0 * k(2);

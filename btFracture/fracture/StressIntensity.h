@@ -31,15 +31,17 @@ struct FrontSifs {
 
 // Per front node: frame and spacing h averaged over its front edges, SIFs from a weighted least-
 // squares fit of the opening at the crack nodes between 1.5 h and 4.5 h from the front (nearest
-// front edge; on a convex front at most 0.75 / kappa) and within 2.5 h along it (hat weight) to
-// the near-front profile of a front with in-plane curvature kappa (the penny's exact profile):
+// front edge), within 2.5 h along it (hat weight), to the near-front profile of a front with
+// in-plane curvature kappa (the penny's exact profile):
 //   cod.n = 8/E' K_I g,  cod.m = 8/E' K_II g,  cod.t = 4/mu K_III g,  g = sqrt(r/2pi (1 - kappa r/2))
 // with E' = E / (1 - nu^2). The nodes nearest the front are left out: there the P1 opening of
 // the Galerkin solution is off the sqrt profile by a fixed fraction at any refinement (measured
 // on the penny: +5 % in the first row, -1 % in the second, < 0.5 % beyond), so correlating them
-// does not converge. A front whose window reaches less than 2.5 h
-// (curvature radius below 3.3 h: a young sheet) or holds no node correlates its first row
-// (within 1.5 h) with the straight-front profile (kappa = 0), as the unfitted correlation does.
+// does not converge. The window ends within the square-root zone: at most a quarter of the
+// sheet's extent behind the node and, on a convex front, 0.75 / kappa. Where that leaves less
+// than 2.5 h (a crack resolved by fewer than about ten elements across), or no node, the node
+// correlates its first row: per front edge the opening at the node opposite it, at distance r,
+// with g = sqrt(r / 2pi), averaged over the node's edges.
 // `nodalOpenings` holds COD = u+ - u- at every crack node (3 per node, zero on the front); all
 // zero gives the frames alone (SIFs zero).
 std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Eigen::VectorXd& nodalOpenings,

@@ -96,10 +96,11 @@ TEST(CrackSystem, SurfaceOnlyCouplingIsTheSameC) {
 
 TEST(CrackSystem, PennyCrackConvergesOnAnyDiscPattern) {
     // Penny crack of radius a centred in a cube of side 8a, uniaxial tension sigma normal to it,
-    // 4, 6 and 8 rings of elements (h = a / rings). The fitted correlation converges: mean and
-    // worst-node K_I error fall with every refinement, the worst node is within 2 % at 8 rings
-    // (measured -3.9 / -0.25 / -0.08 % mean, 5.0 / 0.30 / 0.17 % worst), and turning the disc
-    // pattern by 30 degrees changes no node's K_I by more than 1 % (measured 0.2 %), compared
+    // 4, 6 and 8 rings of elements (h = a / rings). Mean and worst-node K_I error fall with every
+    // refinement and the worst node is within 2 % at 8 rings (measured mean +1.51 / -0.39 /
+    // -0.14 %, worst 3.59 / 0.42 / 0.17 %: first row at 4 rings, where the fit window would
+    // leave the square-root zone, fitted beyond); turning the disc pattern by 30 degrees
+    // changes no node's K_I by more than 1 % at 6 and 8 rings (measured 0.04 / 0.05 %), compared
     // with the unturned front at the same polar angle.
     const double a = 0.05, s = 1e6;
     const ElasticSolver solver(SurfaceMesh(pennyCrackCube(a)), kMaterial);
@@ -140,19 +141,21 @@ TEST(CrackSystem, PennyCrackConvergesOnAnyDiscPattern) {
     EXPECT_LT(worsts[1], worsts[0]);
     EXPECT_LT(worsts[2], worsts[1]);
     EXPECT_LT(worsts[2], 0.02);
-    const auto straight = front(8, 0.0), turned = front(8, M_PI / 6);
-    double turn = 0.0;
-    for (const auto& f : turned) {  // the unturned K_I at f's angle, linear between its nodes
-        auto next = std::upper_bound(straight.begin(), straight.end(), f,
-                                     [](const auto& x, const auto& y) { return x[0] < y[0]; });
-        const auto& hi = next == straight.end() ? straight.front() : *next;
-        const auto& lo = next == straight.begin() ? straight.back() : *(next - 1);
-        const double span = std::remainder(hi[0] - lo[0], 2 * M_PI), at = std::remainder(f[0] - lo[0], 2 * M_PI);
-        const double K = lo[1] + (hi[1] - lo[1]) * at / span;
-        turn = std::max(turn, std::abs(f[1] / K - 1.0));
+    for (int rings : {6, 8}) {
+        const auto straight = front(rings, 0.0), turned = front(rings, M_PI / 6);
+        double turn = 0.0;
+        for (const auto& f : turned) {  // the unturned K_I at f's angle, linear between its nodes
+            auto next = std::upper_bound(straight.begin(), straight.end(), f,
+                                         [](const auto& x, const auto& y) { return x[0] < y[0]; });
+            const auto& hi = next == straight.end() ? straight.front() : *next;
+            const auto& lo = next == straight.begin() ? straight.back() : *(next - 1);
+            const double span = std::remainder(hi[0] - lo[0], 2 * M_PI), at = std::remainder(f[0] - lo[0], 2 * M_PI);
+            const double K = lo[1] + (hi[1] - lo[1]) * at / span;
+            turn = std::max(turn, std::abs(f[1] / K - 1.0));
+        }
+        std::printf("penny %d rings turned by 30 degrees: K_I changes by at most %.2f %%\n", rings, 100 * turn);
+        EXPECT_LT(turn, 0.01);
     }
-    std::printf("penny 8 rings turned by 30 degrees: K_I changes by at most %.2f %%\n", 100 * turn);
-    EXPECT_LT(turn, 0.01);
 }
 
 // Same input, same output on any machine: the penny's BEM factorisation, crack blocks and Schur
