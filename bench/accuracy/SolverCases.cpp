@@ -54,7 +54,7 @@ Eigen::VectorXd bendingTractions(const SurfaceMesh& m, double force, double span
     return q;
 }
 
-GrowthCase growthCase(const std::string& name) {
+GrowthCase growthCase(const std::string& name, int refinement) {
     GrowthCase g;
     g.settings = growthSettings(FractureMethod::Full);
     if (name == "mode_I_growth" || name == "mode_II_growth") {
@@ -62,7 +62,7 @@ GrowthCase growthCase(const std::string& name) {
         g.mesh = growthSlab();
         const Eigen::Matrix3d sigma = one ? modeOneStress() : modeTwoStress();
         g.tractions = [sigma](const SurfaceMesh& m) { return uniformStressTractions(m, sigma); };
-        g.preCrack = [](CrackMesh& c) { addGrowthPreCrack(c); };
+        g.preCrack = [refinement](CrackMesh& c) { addGrowthPreCrack(c, 0.03, 2 * refinement); };
         g.modeOne = one;
         g.steps = 24;
         if (!one) g.compareFrom = 2, g.compareTo = 5;  // as tests/crack (paths separate after 5)
@@ -74,8 +74,8 @@ GrowthCase growthCase(const std::string& name) {
             return uniformStressTractions(m, Eigen::Vector3d(1e6, 0, 0).asDiagonal());
         };
         g.settings.frontEdgeLength = 0.4;
-        g.preCrack = [](CrackMesh& c) {
-            addDiscCrack(c, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 0.02, 2);
+        g.preCrack = [refinement](CrackMesh& c) {
+            addDiscCrack(c, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 0.02, 2 * refinement);
         };
         g.steps = 22;
         return g;
@@ -91,8 +91,8 @@ GrowthCase growthCase(const std::string& name) {
         g.modeOne = false;
         g.steps = 30;
         if (name == "bending_precracked")  // a notch-like disc 8 mm above the bottom face, mid-span
-            g.preCrack = [](CrackMesh& c) {
-                addDiscCrack(c, Eigen::Vector3d(0.0, -0.017, 0.0), Eigen::Vector3d::UnitX(), 0.006, 2);
+            g.preCrack = [refinement](CrackMesh& c) {
+                addDiscCrack(c, Eigen::Vector3d(0.0, -0.017, 0.0), Eigen::Vector3d::UnitX(), 0.006, 2 * refinement);
             };
         else
             g.settings.maxNewCracksPerEvent = 1;
@@ -123,8 +123,8 @@ double diagonal(const TriangleMesh& m) {
     return box.diagonal().norm();
 }
 
-RunResult runGrowth(const std::string& name, const MethodChoice& choice, bool smoke) {
-    GrowthCase g = growthCase(name);
+RunResult runGrowth(const std::string& name, const MethodChoice& choice, bool smoke, int refinement) {
+    GrowthCase g = growthCase(name, refinement);
     if (smoke) g.steps = g.compareTo;
     RunResult r;
     r.caseName = name;
@@ -138,6 +138,12 @@ RunResult runGrowth(const std::string& name, const MethodChoice& choice, bool sm
     FractureSettings fs = g.settings;
     fs.method = choice.method;
     fs.hybridElementThreshold = std::max(1, choice.threshold);
+    if (refinement > 1) {  // crack elements `refinement` times finer than the mean BEM triangle
+        double diameter = 0.0;
+        for (int t = 0; t < solver.mesh().triangleCount(); ++t)
+            diameter += solver.mesh().diameter(t) / solver.mesh().triangleCount();
+        fs.crackElementSize = diameter / refinement;
+    }
     FractureSolver fracture(solver, MaterialField(g.material), fs);
     if (g.preCrack) g.preCrack(fracture.cracks());
     Timer timer;
@@ -171,10 +177,11 @@ RunResult runGrowth(const std::string& name, const MethodChoice& choice, bool sm
     return r;
 }
 
-// Penny (alpha = 90 degrees) and inclined penny (45 degrees) crack of radius 5 cm, 4 rings, in
+// Penny (alpha = 90 degrees) and inclined penny (45 degrees) crack of radius 5 cm, 4 rings (times
+// the refinement), in
 // uniaxial tension of 1 MPa along z: one SIF evaluation per method. Error: the largest over the
 // modes of the mean node error relative to that mode's amplitude (K_I for the penny).
-RunResult runPenny(const std::string& name, const MethodChoice& choice) {
+RunResult runPenny(const std::string& name, const MethodChoice& choice, int refinement) {
     const double a = 0.05, s = 1e6, alpha = name == "penny" ? M_PI / 2 : M_PI / 4;
     const Material material(1e9, 0.3, 1000.0, 1e7, 1e6, 2.0, "penny");
     RunResult r;
@@ -191,7 +198,7 @@ RunResult runPenny(const std::string& name, const MethodChoice& choice) {
     FractureSolver fracture(solver, MaterialField(material), fs);
     // alpha between load (z) and plane
     const Eigen::Vector3d normal(pmath::cos(alpha), 0.0, pmath::sin(alpha));
-    addDiscCrack(fracture.cracks(), Eigen::Vector3d::Zero(), normal, a, 4);
+    addDiscCrack(fracture.cracks(), Eigen::Vector3d::Zero(), normal, a, 4 * refinement);
     Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
     sigma(2, 2) = s;
     Timer timer;
@@ -245,13 +252,13 @@ std::vector<SolverCaseInfo> solverCases(bool smoke) {
     return all;
 }
 
-RunResult runSolverCase(const std::string& name, const MethodChoice& method, bool smoke) {
-    if (name == "penny" || name == "inclined_penny") return runPenny(name, method);
-    return runGrowth(name, method, smoke);
+RunResult runSolverCase(const std::string& name, const MethodChoice& method, bool smoke, int refinement) {
+    if (name == "penny" || name == "inclined_penny") return runPenny(name, method, refinement);
+    return runGrowth(name, method, smoke, refinement);
 }
 
 double compareWithReference(const std::string& name, const RunResult& run, const RunResult& full) {
-    const GrowthCase g = growthCase(name);
+    const GrowthCase g = growthCase(name, 1);
     double worst = -1.0;
     for (int i = g.compareFrom; i < g.compareTo; ++i) {
         if (i >= static_cast<int>(run.stepSamples.size()) || i >= static_cast<int>(full.stepSamples.size()))

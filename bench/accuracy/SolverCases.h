@@ -30,8 +30,10 @@ struct SolverCaseInfo {
 std::vector<SolverCaseInfo> solverCases(bool smoke);
 
 // One run. Analytic cases set sifError; growth cases leave it to the driver (it compares the
-// per-step mean K against the FULL run's: see compareWithReference).
-RunResult runSolverCase(const std::string& name, const MethodChoice& method, bool smoke);
+// per-step mean K against the FULL run's: see compareWithReference). `refinement` k >= 1: crack
+// elements k times finer than the default (pre-cracks with k times the rings, new front edges
+// relative to the mean BEM triangle diameter / k).
+RunResult runSolverCase(const std::string& name, const MethodChoice& method, bool smoke, int refinement);
 
 // Relative SIF error of a growth run against the FULL run over the steps both measured: the
 // largest |mean K / mean K_FULL - 1| (K_I for the mode-I cases, K_eff otherwise).

@@ -5,7 +5,8 @@
 // steps.csv and table.md into --out (make bench-accuracy then draws the charts with
 // scripts/charts/accuracy_charts.py), and prints METRIC lines.
 //   accuracy_vs_time [--out DIR] [--smoke] [--frames N] [--cases a,b,...] [--methods FULL,EST,...]
-//   [--verbose]
+//   [--gain-limit X] [--crack-refinement K] [--verbose]
+// --crack-refinement K: the solver cases with crack elements K times finer (SolverCases.h).
 // --smoke: penny, inclined penny and the mode-I growth test, FULL and EST only; exits non-zero when EST's
 // mode-I SIF error exceeds 15 % or FULL's penny K_I is off by more than 3 %.
 #include "IsolatedRun.h"  // bench/
@@ -107,6 +108,7 @@ int main(int argc, char** argv) {
     bool smoke = false;
     int frames = 60;          // 0.24 s: the ball hits at about frame 15
     double gainLimit = -1.0;  // --gain-limit: EST's §4.3 update gain limit in the scenes (0: off)
+    int refinement = 1;       // --crack-refinement: crack elements k times finer in the solver cases
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--smoke"))
             smoke = true;
@@ -118,6 +120,8 @@ int main(int argc, char** argv) {
             filter = argv[++i];
         else if (!std::strcmp(argv[i], "--gain-limit") && i + 1 < argc)
             gainLimit = std::atof(argv[++i]);
+        else if (!std::strcmp(argv[i], "--crack-refinement") && i + 1 < argc && std::atoi(argv[i + 1]) >= 1)
+            refinement = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--methods") && i + 1 < argc)
             methodFilter = argv[++i];
         else if (!std::strcmp(argv[i], "--verbose"))  // per-step fracture log (debug level)
@@ -125,7 +129,7 @@ int main(int argc, char** argv) {
         else {
             std::fprintf(stderr,
                          "usage: %s [--out DIR] [--smoke] [--frames N] [--cases a,b,...] [--methods "
-                         "FULL,EST,...] [--gain-limit X] [--verbose]\n",
+                         "FULL,EST,...] [--gain-limit X] [--crack-refinement K] [--verbose]\n",
                          argv[0]);
             return 2;
         }
@@ -137,7 +141,7 @@ int main(int argc, char** argv) {
         if (!selected(filter, c.name)) continue;
         std::printf("%s\n", c.name.c_str());
         auto results = runMethods(c.name, c.grows && !smoke, 0,
-                                  [&](const MethodChoice& m) { return runSolverCase(c.name, m, smoke); });
+                                  [&](const MethodChoice& m) { return runSolverCase(c.name, m, smoke, refinement); });
         if (!c.analytic)
             for (auto& r : results)
                 r.sifError = results.empty() ? -1.0 : compareWithReference(c.name, r, results[0]);

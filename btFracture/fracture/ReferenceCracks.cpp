@@ -220,8 +220,8 @@ FractureSettings growthSettings(FractureMethod method) {
     return fs;
 }
 
-void addGrowthPreCrack(CrackMesh& cracks, double offsetY) {
-    addDiscCrack(cracks, Eigen::Vector3d(0.0, offsetY, 0.0), Eigen::Vector3d::UnitX(), 0.012, 2);
+void addGrowthPreCrack(CrackMesh& cracks, double offsetY, int rings) {
+    addDiscCrack(cracks, Eigen::Vector3d(0.0, offsetY, 0.0), Eigen::Vector3d::UnitX(), 0.012, rings);
 }
 
 Eigen::Matrix3d modeOneStress() {

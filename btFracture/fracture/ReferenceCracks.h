@@ -85,13 +85,13 @@ struct SurfaceCrackResult {
 SurfaceCrackResult solveSurfaceCrack(const SurfaceCrackCase& c, const Material& material);
 
 // The growth tests: a 20 x 10 x 6 cm slab (360 triangles), PMMA-like stiffness with high
-// strength (no new seeds) and tiny toughness (every front node grows), a two-ring disc pre-crack
-// of radius 1.2 cm, normal x, 2 cm above the centre (offset along y), grown with full-length
-// steps (minimum speed 1) and front edges of 0.6 h.
+// strength (no new seeds) and tiny toughness (every front node grows), a disc pre-crack of
+// `rings` rings (2 by default) and radius 1.2 cm, normal x, 2 cm above the centre (offset along
+// y), grown with full-length steps (minimum speed 1) and front edges of 0.6 h.
 TriangleMesh growthSlab();
 Material growthMaterial();
 FractureSettings growthSettings(FractureMethod method);
-void addGrowthPreCrack(CrackMesh& cracks, double offsetY = 0.03);
+void addGrowthPreCrack(CrackMesh& cracks, double offsetY = 0.03, int rings = 2);
 // Far-field stress of the nominally mode-I (tension along x, normal to the pre-crack) and
 // mode-II (shear xy, parallel to it) tests [Pa].
 Eigen::Matrix3d modeOneStress();
