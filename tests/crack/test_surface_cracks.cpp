@@ -24,19 +24,18 @@ SurfaceCrackResult solve(const SurfaceCrackCase& c) {
 
 }  // namespace
 
-// Through edge crack, 4 elements along the depth. FULL: measured +2.5 % (a/b = 0.2) and +5.1 %
-// (0.4); at 8 elements +4.2 % and +6.5 % (the mid-thickness K_I of the 3D plate sits a few per cent
-// above the plane-strain handbook value, and the displacement correlation reads high, as for the
-// penny). With the mouth held shut the same meshes gave 0.58 and 0.35 of the exact value.
-// EST, no front moved yet: §4.2 from the crack-free local stress (no §4.3 update), K_I =
-// (2/pi) sigma (pi A)^(1/4) with the sheet's whole area A = a b/2 - an embedded crack's estimate,
-// whatever the mouth does (measured: 1.0003 and 1.0001 of it; 0.43 and 0.23 of FULL's K_I).
+// Through edge crack, 4 elements along the depth, plate as thick as wide. FULL: measured +0.3 %
+// (a/b = 0.2) and +3.7 % (0.4); at 6 / 8 elements +1.7 / +1.9 % and +4.6 / +5.1 % (the
+// displacement correlation reads high, as for the penny). EST, no front moved yet: §4.2 from the
+// crack-free local stress (no §4.3 update), K_I = (2/pi) sigma (pi A)^(1/4) with the sheet's
+// whole area A = a t - an embedded crack's estimate, whatever the mouth does (0.52 and 0.28 of
+// FULL's K_I).
 TEST(SurfaceCrack, EdgeCrackFullMatchesTadaEstIsEmbedded) {
-    for (const auto& [ratio, tolerance] : {std::pair{0.2, 0.05}, std::pair{0.4, 0.06}}) {
+    for (const double ratio : {0.2, 0.4}) {
         const SurfaceCrackCase c = edgeCrackCase(ratio, 4);
         const SurfaceCrackResult r = solve(c);
-        EXPECT_NEAR(r.KI / c.exactKI, 1.0, tolerance) << c.name;
-        const double area = ratio * kEdgeCrackPlateWidth * 0.5 * kEdgeCrackPlateWidth;
+        EXPECT_NEAR(r.KI / c.exactKI, 1.0, 0.05) << c.name;
+        const double area = ratio * kEdgeCrackPlateWidth * kEdgeCrackPlateThickness;
         const double embedded = 2.0 / M_PI * kEdgeCrackTension * std::pow(M_PI * area, 0.25);
         EXPECT_NEAR(r.estimatedKI / embedded, 1.0, 0.01) << c.name;
     }
