@@ -83,10 +83,10 @@ double frontCurvature(const CrackMesh& cracks, const FrontSifs& f, const std::ve
     return (a + b).dot(f.frame.ahead) > 0.0 ? -kappa : kappa;
 }
 
-
 // First-row correlation (straight-front profile): per front edge, the opening at the node
-// opposite it at its distance r from the edge, averaged per front node over its edges.
-std::map<int, Eigen::Vector3d> firstRowOpenings(const CrackMesh& cracks, const Eigen::VectorXd& cod) {
+// opposite it over g = sqrt(r / 2 pi), r its distance from the edge, in the edge's frame
+// (n, m, t); averaged per front node over its edges.
+std::map<int, Eigen::Vector3d> firstRowAmplitudes(const CrackMesh& cracks, const Eigen::VectorXd& cod) {
     std::map<int, std::pair<Eigen::Vector3d, int>> sum;  // sum of cod / g in the node's frame
     for (const auto& e : cracks.frontEdges()) {
         const auto& tri = cracks.triangle(e.triangle);
@@ -139,7 +139,7 @@ std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Ei
     std::vector<FrontSifs> out = frontFrames(cracks, edgesAtNode);
     if (cod.size() == 0 || cod.isZero(0.0)) return out;  // frames only (EST)
     const auto& front = cracks.frontEdges();
-    const std::map<int, Eigen::Vector3d> firstRow = firstRowOpenings(cracks, cod);
+    const std::map<int, Eigen::Vector3d> firstRow = firstRowAmplitudes(cracks, cod);
     const std::map<int, double> extent = extentBehind(cracks, out);
     for (FrontSifs& f : out) {
         const double kappa = frontCurvature(cracks, f, edgesAtNode[f.node]);
