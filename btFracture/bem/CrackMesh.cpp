@@ -18,6 +18,7 @@ int CrackMesh::addNode(const Eigen::Vector3d& position) {
     nodeTriangles_.emplace_back();
     unknown_.push_back(-1);
     surfaceNode_.push_back(kUnclassified);
+    surfaceEdge_.push_back({-1, -1});
     return nodeCount() - 1;
 }
 
@@ -82,8 +83,17 @@ std::vector<int> CrackMesh::refreshUnknowns(const SurfaceMesh& body) {
     for (int i = 0; i < nodeCount(); ++i) {
         if (surfaceNode_[i] != kUnclassified) continue;
         surfaceNode_[i] = -1;
-        for (int s = 0; s < body.nodeCount() && surfaceNode_[i] < 0; ++s)
+        const SurfaceMesh::Nearest nearest = body.nearest(nodes_[i]);
+        if (nearest.distance > tolerance) continue;
+        const auto& tri = body.triangle(nearest.triangle);
+        for (int s : tri)
             if ((body.node(s) - nodes_[i]).norm() <= tolerance) surfaceNode_[i] = s;
+        for (int k = 0; k < 3 && surfaceNode_[i] < 0; ++k) {
+            const Eigen::Vector3d a = body.node(tri[k]), ab = body.node(tri[(k + 1) % 3]) - a;
+            const double t = (nodes_[i] - a).dot(ab) / ab.squaredNorm();
+            if (t > 0.0 && t < 1.0 && (a + t * ab - nodes_[i]).norm() <= tolerance)
+                surfaceEdge_[i] = {std::min(tri[k], tri[(k + 1) % 3]), std::max(tri[k], tri[(k + 1) % 3])};
+        }
     }
     return refreshUnknowns();
 }
@@ -129,11 +139,11 @@ std::vector<int> CrackMesh::refreshUnknowns() {
     // off the surface: there the front meets the surface.
     std::vector<char> frontEnd(nodes_.size(), 0);
     for (const FrontEdge& e : boundaryEdges_) {
-        if (surfaceNode_[e.a] >= 0 && surfaceNode_[e.b] < 0 && unknown_[e.a] < 0) frontEnd[e.a] = 1;
-        if (surfaceNode_[e.b] >= 0 && surfaceNode_[e.a] < 0 && unknown_[e.b] < 0) frontEnd[e.b] = 1;
+        if (onSurface(e.a) && !onSurface(e.b) && unknown_[e.a] < 0) frontEnd[e.a] = 1;
+        if (onSurface(e.b) && !onSurface(e.a) && unknown_[e.b] < 0) frontEnd[e.b] = 1;
     }
     for (int i = 0; i < nodeCount(); ++i)
-        if (surfaceNode_[i] >= 0 && !frontEnd[i]) onFront[i] = 0;
+        if (onSurface(i) && !frontEnd[i]) onFront[i] = 0;
     frontEdges_.clear();
     for (const FrontEdge& e : boundaryEdges_)
         if (onFront[e.a] && onFront[e.b]) frontEdges_.push_back(e);

@@ -16,21 +16,94 @@
 namespace btfracture {
 namespace {
 
+// Surface triangles with a crack mouth running along one of their edges through crack nodes
+// inside that edge (FORMULATION.md, "Mouth"): each is split into a fan of pieces from its
+// opposite corner, so that the cut surface hats of those nodes are P1 on the pieces and every
+// pair touching the mouth shares whole edges or corners. Piece ids: surface node ids for surface
+// nodes, nodeCount + crack node for the crack nodes inside the edge.
+struct MouthPiece {
+    QuadraturePanel panel;
+    std::array<int, 3> crackNode;  // crack node at each corner, -1: none
+};
+using MouthSplit = std::map<int, std::vector<MouthPiece>>;  // surface triangle -> pieces
+
+MouthSplit splitAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks, const QuadratureSettings& q) {
+    const int n = mesh.nodeCount();
+    std::map<std::array<int, 2>, std::vector<std::pair<double, int>>> onEdge;  // -> (t along, crack node)
+    std::map<int, int> crackNodeAt;                                            // surface node -> crack node
+    for (int i = 0; i < cracks.nodeCount(); ++i) {
+        if (cracks.surfaceNodeOf(i) >= 0) crackNodeAt.emplace(cracks.surfaceNodeOf(i), i);
+        const auto& e = cracks.surfaceEdgeOf(i);
+        if (e[0] < 0) continue;
+        const Eigen::Vector3d a = mesh.node(e[0]), ab = mesh.node(e[1]) - a;
+        onEdge[e].emplace_back((cracks.node(i) - a).dot(ab) / ab.squaredNorm(), i);
+    }
+    MouthSplit out;
+    for (auto& [edge, points] : onEdge) {
+        std::sort(points.begin(), points.end());
+        for (int t : mesh.trianglesAtNode(edge[0])) {
+            const auto& tri = mesh.triangle(t);
+            int k = 0;  // the corner where the edge starts in t's orientation
+            while (k < 3 && !((tri[k] == edge[0] && tri[(k + 1) % 3] == edge[1]) ||
+                              (tri[k] == edge[1] && tri[(k + 1) % 3] == edge[0])))
+                ++k;
+            if (k == 3) continue;
+            if (out.count(t))
+                throw Error("crack system: a crack mouth runs along two edges of surface triangle " +
+                            std::to_string(t) + " (not supported)");
+            const int apex = tri[(k + 2) % 3];
+            std::vector<std::pair<int, int>> line;  // (panel id, crack node) from tri[k] to tri[k+1]
+            auto surfaceVertex = [&](int s) {
+                const auto it = crackNodeAt.find(s);
+                return std::pair{s, it == crackNodeAt.end() ? -1 : it->second};
+            };
+            line.push_back(surfaceVertex(tri[k]));
+            const bool forward = tri[k] == edge[0];
+            for (std::size_t j = 0; j < points.size(); ++j) {
+                const int node = points[forward ? j : points.size() - 1 - j].second;
+                line.emplace_back(n + node, node);
+            }
+            line.push_back(surfaceVertex(tri[(k + 1) % 3]));
+            auto position = [&](const std::pair<int, int>& v) {
+                return v.first < n ? mesh.node(v.first) : cracks.node(v.second);
+            };
+            for (std::size_t j = 0; j + 1 < line.size(); ++j) {
+                Panel panel{{line[j].first, line[j + 1].first, apex},
+                            {position(line[j]), position(line[j + 1]), mesh.node(apex)},
+                            mesh.normal(t),
+                            0.0};
+                panel.area =
+                    0.5 *
+                    (panel.corners[1] - panel.corners[0]).cross(panel.corners[2] - panel.corners[0]).norm();
+                out[t].push_back({QuadraturePanel(panel, q), {line[j].second, line[j + 1].second, -1}});
+            }
+        }
+    }
+    return out;
+}
+
+// Surface curl n x grad(lambda_k) of the barycentric coordinate of corner k of a flat panel.
+Eigen::Vector3d pieceCurl(const Panel& p, int k) {
+    const Eigen::Vector3d edge = p.corners[(k + 2) % 3] - p.corners[(k + 1) % 3];
+    return p.normal.cross(p.normal.cross(edge) / (2.0 * p.area));
+}
+
 // One triangle carrying (parts of) crack basis functions: a crack triangle (crack hats), or a
-// surface triangle on the + side of a mouth node (the surface hat of that node cut along the
-// mouth, FORMULATION.md). Panel ids: surface node ids for surface nodes and mouth nodes (which
-// lie on one), nodeCount + crack node for the others, so that pairs sharing a node get the
+// surface triangle or piece of one on the + side of a mouth node (the surface hat of that node
+// cut along the mouth, FORMULATION.md). Panel ids: surface node ids for surface nodes and mouth
+// nodes on them, nodeCount + crack node for the others, so that pairs sharing a node get the
 // singular rules.
 struct BasisElement {
     QuadraturePanel panel;
     std::array<Eigen::Vector3d, 3> curl;
     std::array<int, 3> unknown;  // crack unknown of each corner, -1: none
-    int surfaceTriangle;         // -1 for a crack triangle
+    int surfaceTriangle;         // the surface triangle it lies on, -1 for a crack triangle
 };
 
 // The elements of the given unknowns' basis functions.
 std::vector<BasisElement> basisElements(const SurfaceMesh& mesh, const CrackMesh& cracks,
-                                        const std::vector<int>& unknowns, const QuadratureSettings& q) {
+                                        const std::vector<int>& unknowns, const MouthSplit& split,
+                                        const QuadratureSettings& q) {
     const int n = mesh.nodeCount();
     auto idOf = [&](int node) {
         return cracks.surfaceNodeOf(node) >= 0 ? cracks.surfaceNodeOf(node) : node + n;
@@ -52,26 +125,45 @@ std::vector<BasisElement> basisElements(const SurfaceMesh& mesh, const CrackMesh
         }
         out.push_back(e);
     }
-    std::map<int, int> halfHat;  // surface triangle -> element
+    std::map<std::pair<int, int>, int> cutHat;  // (surface triangle, piece or -1) -> element
+    auto element = [&](int tau, int piece) -> BasisElement& {
+        auto it = cutHat.find({tau, piece});
+        if (it == cutHat.end()) {
+            it = cutHat.emplace(std::pair{tau, piece}, static_cast<int>(out.size())).first;
+            out.push_back({piece < 0 ? QuadraturePanel(panelOf(mesh, tau), q) : split.at(tau)[piece].panel,
+                           {},
+                           {-1, -1, -1},
+                           tau});
+        }
+        return out[it->second];
+    };
     for (int k : unknowns) {
         const int node = cracks.nodeOfUnknown()[k];
         if (!cracks.isMouth(node)) continue;
-        const int s = idOf(node);
         Eigen::Vector3d normal = Eigen::Vector3d::Zero();
         for (int t : cracks.trianglesAtNode(node)) normal += cracks.normal(t);
-        for (int tau : mesh.trianglesAtNode(s)) {
+        const int s = cracks.surfaceNodeOf(node);
+        const std::vector<int>& around = mesh.trianglesAtNode(s >= 0 ? s : cracks.surfaceEdgeOf(node)[0]);
+        for (int tau : around) {
             if ((mesh.centroid(tau) - cracks.node(node)).dot(normal) <= 0.0) continue;
-            auto it = halfHat.find(tau);
-            if (it == halfHat.end()) {
-                it = halfHat.emplace(tau, static_cast<int>(out.size())).first;
-                out.push_back({QuadraturePanel(panelOf(mesh, tau), q), {}, {-1, -1, -1}, tau});
+            const auto pieces = split.find(tau);
+            if (pieces == split.end()) {
+                if (s < 0) continue;  // only the split triangles of its edge carry an edge node's hat
+                BasisElement& e = element(tau, -1);
+                for (int c = 0; c < 3; ++c)
+                    if (mesh.triangle(tau)[c] == s) {
+                        e.curl[c] = mesh.hatCurl(tau, c);
+                        e.unknown[c] = k;
+                    }
+                continue;
             }
-            BasisElement& e = out[it->second];
-            for (int c = 0; c < 3; ++c)
-                if (mesh.triangle(tau)[c] == s) {
-                    e.curl[c] = mesh.hatCurl(tau, c);
-                    e.unknown[c] = k;
-                }
+            for (int p = 0; p < static_cast<int>(pieces->second.size()); ++p)
+                for (int c = 0; c < 3; ++c)
+                    if (pieces->second[p].crackNode[c] == node) {
+                        BasisElement& e = element(tau, p);
+                        e.curl[c] = pieceCurl(e.panel.panel, c);
+                        e.unknown[c] = k;
+                    }
         }
     }
     return out;
@@ -97,7 +189,8 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
     const bool withLoad = blocks == CouplingBlocks::SurfaceAndLoad;
     CrackSurfaceCoupling out{Eigen::MatrixXd::Zero(3 * n, 3 * unknowns.size()),
                              Eigen::MatrixXd::Zero(withLoad ? 3 * unknowns.size() : 0, withLoad ? 3 * m : 0)};
-    const std::vector<BasisElement> support = basisElements(mesh, cracks, unknowns, q);
+    const MouthSplit split = splitAlongMouths(mesh, cracks, q);
+    const std::vector<BasisElement> support = basisElements(mesh, cracks, unknowns, split, q);
     std::vector<std::array<int, 3>> columns(support.size());
     for (std::size_t e = 0; e < support.size(); ++e)
         for (int b = 0; b < 3; ++b) {
@@ -117,10 +210,22 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
             const QuadraturePanel& surface = surfacePanels[sigma];
             std::array<Eigen::Vector3d, 3> surfaceCurl;
             for (int a = 0; a < 3; ++a) surfaceCurl[a] = mesh.hatCurl(sigma, a);
+            const auto pieces = split.find(sigma);
             for (std::size_t e = 0; e < support.size(); ++e) {
                 const BasisElement& crack = support[e];
-                // x on the surface, y on the element.
-                const PairIntegrals pi = integrate(surface, crack.panel, q, withLoad);
+                // x on the surface (piece by piece where a mouth splits it), y on the element.
+                PairIntegrals pi;
+                if (pieces == split.end()) {
+                    pi = integrate(surface, crack.panel, q, withLoad);
+                } else {
+                    for (const MouthPiece& piece : pieces->second) {
+                        const PairIntegrals part = integrate(piece.panel, crack.panel, q, withLoad);
+                        pi.inverseDistance += part.inverseDistance;
+                        pi.dyadic += part.dyadic;
+                        pi.doubleLayerXY += part.doubleLayerXY;
+                        pi.doubleLayerYX += part.doubleLayerYX;
+                    }
+                }
                 const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
                 for (int b = 0; b < 3; ++b) {
                     const int col = columns[e][b];
@@ -136,7 +241,8 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
                     // Test function on the element against the traction of sigma (the mass term
                     // only where a cut surface hat lies on sigma itself).
                     if (withLoad) {
-                        const double mass = crack.surfaceTriangle == sigma ? mesh.area(sigma) / 6.0 : 0.0;
+                        const double mass =
+                            crack.surfaceTriangle == sigma ? crack.panel.panel.area / 6.0 : 0.0;
                         addLoadBlock(d.data(), coeff, mu, mass - pi.doubleLayerXY[b],
                                      [&](int i, int j, double v) { out.G(col + i, 3 * sigma + j) += v; });
                     }
@@ -178,7 +284,8 @@ int CrackSystem::update() {
     const QuadratureSettings& q = solver_.settings().quadrature;
     std::vector<int> all(total);
     for (int k = 0; k < total; ++k) all[k] = k;
-    const std::vector<BasisElement> elements = basisElements(solver_.mesh(), cracks_, all, q);
+    const std::vector<BasisElement> elements =
+        basisElements(solver_.mesh(), cracks_, all, splitAlongMouths(solver_.mesh(), cracks_, q), q);
     const int first = assembledUnknowns_;
     auto touchesFresh = [&](const BasisElement& e) {
         return std::any_of(e.unknown.begin(), e.unknown.end(), [&](int k) { return k >= first; });

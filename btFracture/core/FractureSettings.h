@@ -54,7 +54,7 @@ struct CrackSettings {
     double minimumSpeed = 0.1;     // crack speed floor [fraction of the Rayleigh speed]
     // k of §4.2. The paper uses 1.1215 (through edge crack, Gross & Seelig table 4.1), but its
     // BEM and ours hold grown cracks at zero opening on the whole sheet boundary (FULL opens a
-    // mouth only where a sheet meets the surface at surface nodes), i.e. as embedded cracks,
+    // mouth only where a sheet meets the surface along surface edges), i.e. as embedded cracks,
     // whose factor is 2/pi (penny crack). Measured against FULL on a growing mode-I crack: 2/pi
     // tracks within 5 %, 1.1215 overestimates 1.7-3x (tests/crack).
     double estimatorGeometryFactor = 2.0 / M_PI;

@@ -53,11 +53,12 @@ struct SurfaceCrackCase {
 
 // The edge-crack plate's width b and thickness [m] (as thick as wide: its mid-thickness is near
 // plane strain, which the handbook value assumes) and tension sigma [Pa].
-constexpr double kEdgeCrackPlateWidth = 0.1, kEdgeCrackPlateThickness = kEdgeCrackPlateWidth, kEdgeCrackTension = 1e6;
+constexpr double kEdgeCrackPlateWidth = 0.1, kEdgeCrackPlateThickness = kEdgeCrackPlateWidth,
+                 kEdgeCrackTension = 1e6;
 // Plate of width b = kEdgeCrackPlateWidth (x), height 4 b (y) and thickness b (z) under uniform
 // tension sigma = kEdgeCrackTension along y, straight edge crack of depth a = ratio b from the
 // face x = 0; h = a / elementsPerDepth on the surface near the crack, h / crackRefinement on the
-// crack (the mouth then has sheet nodes between surface nodes, held shut). Exact: sigma sqrt(pi a) F(a/b)
+// crack (the mouth then has sheet nodes inside surface edges). Exact: sigma sqrt(pi a) F(a/b)
 // (Tada's fit, 0.5 % for a/b <= 0.6; edgeCrackFactor).
 SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension = 0.0,
                                int crackRefinement = 1);
