@@ -92,7 +92,8 @@ GrowthCase growthCase(const std::string& name, int refinement) {
         g.steps = 30;
         if (name == "bending_precracked")  // a notch-like disc 8 mm above the bottom face, mid-span
             g.preCrack = [refinement](CrackMesh& c) {
-                addDiscCrack(c, Eigen::Vector3d(0.0, -0.017, 0.0), Eigen::Vector3d::UnitX(), 0.006, 2 * refinement);
+                addDiscCrack(c, Eigen::Vector3d(0.0, -0.017, 0.0), Eigen::Vector3d::UnitX(), 0.006,
+                             2 * refinement);
             };
         else
             g.settings.maxNewCracksPerEvent = 1;

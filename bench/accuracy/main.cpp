@@ -140,8 +140,9 @@ int main(int argc, char** argv) {
     for (const SolverCaseInfo& c : solverCases(smoke)) {
         if (!selected(filter, c.name)) continue;
         std::printf("%s\n", c.name.c_str());
-        auto results = runMethods(c.name, c.grows && !smoke, 0,
-                                  [&](const MethodChoice& m) { return runSolverCase(c.name, m, smoke, refinement); });
+        auto results = runMethods(c.name, c.grows && !smoke, 0, [&](const MethodChoice& m) {
+            return runSolverCase(c.name, m, smoke, refinement);
+        });
         if (!c.analytic)
             for (auto& r : results)
                 r.sifError = results.empty() ? -1.0 : compareWithReference(c.name, r, results[0]);

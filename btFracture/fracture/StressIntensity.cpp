@@ -176,10 +176,13 @@ std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Ei
                 const double g = std::sqrt(r / (2.0 * M_PI) * std::max(0.1, 1.0 - 0.5 * curvature * r));
                 const Eigen::Vector3d jump = cod.segment<3>(3 * v);
                 gg += w * g * g;
-                gc += w * g * Eigen::Vector3d(jump.dot(f.frame.normal), jump.dot(f.frame.ahead),
-                                              jump.dot(f.frame.tangent));
+                gc += w * g *
+                      Eigen::Vector3d(jump.dot(f.frame.normal), jump.dot(f.frame.ahead),
+                                      jump.dot(f.frame.tangent));
             }
-            return gg > 0.0 ? Eigen::Vector3d(gc / gg) : Eigen::Vector3d(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+            return gg > 0.0
+                       ? Eigen::Vector3d(gc / gg)
+                       : Eigen::Vector3d(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
         };
         // A front resolved by fewer than kResolvedRows rows within the reach (a small, young or
         // strongly curved sheet), or with no node in the window: the first row.

@@ -48,8 +48,8 @@ std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Ei
                                                const Material& material);
 
 // Inverse of the correlation for a straight front (used by the estimator's update, §4.3): the
-// opening a front that has advanced by `distance` d leaves at its old position, cod = 2 K c sqrt(2 d) / (mu sqrt(pi))
-// per mode with c = 1 - nu for modes I and II and c = 1 for mode III, in the given frame. The
+// opening a front that has advanced by `distance` d leaves at its old position, cod = 2 K c sqrt(2 d) / (mu
+// sqrt(pi)) per mode with c = 1 - nu for modes I and II and c = 1 for mode III, in the given frame. The
 // paper's formula has no factor 2: it gives the displacement of one crack face, while the
 // opening (what the COD unknowns and displacementCorrelation use) is the jump between both.
 // A compressive front (EST's K_I is a magnitude) closes: its normal jump is -|K_I| c ..., as the

@@ -117,7 +117,8 @@ TEST(CrackSystem, PennyCrackConvergesOnAnyDiscPattern) {
         const CrackSystem::Solution sol = system.solve(q);
         std::vector<std::array<double, 3>> out;
         for (const auto& f : displacementCorrelation(system.cracks(), system.nodalOpenings(sol), kMaterial))
-            out.push_back({std::atan2(f.position.y(), f.position.x()), f.KI, std::max(std::abs(f.KII), std::abs(f.KIII))});
+            out.push_back({std::atan2(f.position.y(), f.position.x()), f.KI,
+                           std::max(std::abs(f.KII), std::abs(f.KIII))});
         std::sort(out.begin(), out.end());
         return out;
     };
@@ -130,8 +131,10 @@ TEST(CrackSystem, PennyCrackConvergesOnAnyDiscPattern) {
             worst = std::max(worst, std::abs(f[1] / exact - 1.0));
             shear = std::max(shear, f[2] / exact);
         }
-        std::printf("penny %d rings: %zu front nodes, K_I mean %+.2f %%, worst node %.2f %%, max |K_II|,|K_III| %.2f %%\n",
-                    rings, sifs.size(), 100 * mean, 100 * worst, 100 * shear);
+        std::printf(
+            "penny %d rings: %zu front nodes, K_I mean %+.2f %%, worst node %.2f %%, max |K_II|,|K_III| %.2f "
+            "%%\n",
+            rings, sifs.size(), 100 * mean, 100 * worst, 100 * shear);
         EXPECT_LT(shear, 0.03);
         means.push_back(std::abs(mean));
         worsts.push_back(worst);
@@ -149,11 +152,13 @@ TEST(CrackSystem, PennyCrackConvergesOnAnyDiscPattern) {
                                          [](const auto& x, const auto& y) { return x[0] < y[0]; });
             const auto& hi = next == straight.end() ? straight.front() : *next;
             const auto& lo = next == straight.begin() ? straight.back() : *(next - 1);
-            const double span = std::remainder(hi[0] - lo[0], 2 * M_PI), at = std::remainder(f[0] - lo[0], 2 * M_PI);
+            const double span = std::remainder(hi[0] - lo[0], 2 * M_PI),
+                         at = std::remainder(f[0] - lo[0], 2 * M_PI);
             const double K = lo[1] + (hi[1] - lo[1]) * at / span;
             turn = std::max(turn, std::abs(f[1] / K - 1.0));
         }
-        std::printf("penny %d rings turned by 30 degrees: K_I changes by at most %.2f %%\n", rings, 100 * turn);
+        std::printf("penny %d rings turned by 30 degrees: K_I changes by at most %.2f %%\n", rings,
+                    100 * turn);
         EXPECT_LT(turn, 0.01);
     }
 }
