@@ -26,8 +26,8 @@ public:
     int addTriangle(int a, int b, int c);          // counter-clockwise around n_c
     // Recomputes the front, numbers the unknowns of nodes that became interior or mouth since
     // the last call (existing unknowns keep their numbers) and returns those nodes. Throws if a
-    // sheet is not an edge-manifold open surface. Only nodes matched to a body's surface node
-    // by an earlier call with that body can be mouth nodes.
+    // sheet is not an edge-manifold open surface. Only nodes matched to a body's surface node or
+    // edge by an earlier call with that body can be mouth nodes.
     std::vector<int> refreshUnknowns();
     // The same after matching the nodes not matched yet (nodes never move) to the surface node
     // or the inside of the surface edge of `body` they lie on (within 1e-9 of its radius).
