@@ -139,12 +139,8 @@ RunResult runGrowth(const std::string& name, const MethodChoice& choice, bool sm
     FractureSettings fs = g.settings;
     fs.method = choice.method;
     fs.hybridElementThreshold = std::max(1, choice.threshold);
-    if (refinement > 1) {  // crack elements `refinement` times finer than the mean BEM triangle
-        double diameter = 0.0;
-        for (int t = 0; t < solver.mesh().triangleCount(); ++t)
-            diameter += solver.mesh().diameter(t) / solver.mesh().triangleCount();
-        fs.crackElementSize = diameter / refinement;
-    }
+    // Crack elements `refinement` times finer than the mean BEM triangle.
+    if (refinement > 1) fs.crackElementSize = solver.mesh().meanDiameter() / refinement;
     FractureSolver fracture(solver, MaterialField(g.material), fs);
     if (g.preCrack) g.preCrack(fracture.cracks());
     Timer timer;

@@ -57,6 +57,7 @@ SurfaceMesh::SurfaceMesh(TriangleMesh mesh) {
         normals_[t] = cross / twiceArea;
         centroids_[t] = (a + b + c) / 3.0;
         diameters_[t] = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+        meanDiameter_ += diameters_[t] / m;
         // grad(phi_k) = n x (opposite edge, counter-clockwise) / (2 A)
         const Eigen::Vector3d* corner[3] = {&a, &b, &c};
         for (int k = 0; k < 3; ++k) {

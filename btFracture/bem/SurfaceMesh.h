@@ -29,6 +29,7 @@ public:
     const Eigen::Vector3d& normal(int t) const { return normals_[t]; }  // outward unit normal
     const Eigen::Vector3d& centroid(int t) const { return centroids_[t]; }
     double diameter(int t) const { return diameters_[t]; }  // longest edge
+    double meanDiameter() const { return meanDiameter_; }   // over the triangles [m]
     // Surface gradient of the P1 hat function of local corner k on triangle t (constant there).
     const Eigen::Vector3d& hatGradient(int t, int k) const { return hatGradients_[t][k]; }
     // Surface curl n x grad(phi) of that hat function (appendix Eq. 8 after integration by parts).
@@ -60,6 +61,7 @@ private:
     std::vector<Eigen::Vector3d> nodes_;
     std::vector<std::array<int, 3>> triangles_;
     std::vector<double> areas_, diameters_;
+    double meanDiameter_ = 0.0;
     std::vector<Eigen::Vector3d> normals_, centroids_;
     std::vector<std::array<Eigen::Vector3d, 3>> hatGradients_;
     std::vector<std::vector<int>> nodeTriangles_;

@@ -428,9 +428,7 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     if (s.fracture->cracks().triangleCount() == trianglesBefore && !swept) return outcome;  // nothing cracked
 
     timer.restart();
-    double meanSize = 0.0;
-    const SurfaceMesh& mesh = s.solver->mesh();
-    for (int t = 0; t < mesh.triangleCount(); ++t) meanSize += mesh.diameter(t) / mesh.triangleCount();
+    const double meanSize = s.solver->mesh().meanDiameter();
     for (const auto& [sheet, cut] : sheetsToCut(s, 0.5 * meanSize + 3.0 * s.levelSet->voxelSize())) {
         TriangleMesh named = cut;
         named.name = body.name() + " crack " + std::to_string(sheet);

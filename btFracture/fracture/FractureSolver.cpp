@@ -22,10 +22,7 @@ FractureSolver::FractureSolver(const ElasticSolver& solver, MaterialField field,
     active_ =
         settings_.method == FractureMethod::Estimated ? FractureMethod::Estimated : FractureMethod::Full;
     const SurfaceMesh& mesh = solver_.mesh();
-    elementSize_ = settings_.crackElementSize;
-    if (elementSize_ == 0.0)
-        for (int t = 0; t < mesh.triangleCount(); ++t)
-            elementSize_ += mesh.diameter(t) / mesh.triangleCount();
+    elementSize_ = settings_.crackElementSize > 0.0 ? settings_.crackElementSize : mesh.meanDiameter();
     seeded_.assign(mesh.triangleCount(), 0);
     crackLoad_ = Eigen::VectorXd::Zero(3 * mesh.nodeCount());
 }
