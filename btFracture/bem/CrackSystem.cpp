@@ -176,10 +176,10 @@ PairIntegrals integrate(const QuadraturePanel& x, const QuadraturePanel& y, cons
     return integrateSingular(x.panel, y.panel, q);
 }
 
-}  // namespace
-
-CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, const CrackMesh& cracks,
-                                                  const std::vector<int>& unknowns, CouplingBlocks blocks) {
+// assembleCrackSurfaceCoupling with the mouth split already made.
+CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMesh& cracks,
+                                      const std::vector<int>& unknowns, CouplingBlocks blocks,
+                                      const MouthSplit& split) {
     const SurfaceMesh& mesh = solver.mesh();
     const int n = mesh.nodeCount(), m = mesh.triangleCount();
     const double mu = solver.material().shearModulus(), nu = solver.material().poissonRatio();
@@ -189,7 +189,6 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
     const bool withLoad = blocks == CouplingBlocks::SurfaceAndLoad;
     CrackSurfaceCoupling out{Eigen::MatrixXd::Zero(3 * n, 3 * unknowns.size()),
                              Eigen::MatrixXd::Zero(withLoad ? 3 * unknowns.size() : 0, withLoad ? 3 * m : 0)};
-    const MouthSplit split = splitAlongMouths(mesh, cracks, q);
     const std::vector<BasisElement> support = basisElements(mesh, cracks, unknowns, split, q);
     std::vector<std::array<int, 3>> columns(support.size());
     for (std::size_t e = 0; e < support.size(); ++e)
@@ -253,6 +252,14 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
     return out;
 }
 
+}  // namespace
+
+CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, const CrackMesh& cracks,
+                                                  const std::vector<int>& unknowns, CouplingBlocks blocks) {
+    return assembleCoupling(solver, cracks, unknowns, blocks,
+                            splitAlongMouths(solver.mesh(), cracks, solver.settings().quadrature));
+}
+
 CrackSystem::CrackSystem(const ElasticSolver& solver, CrackMesh& cracks, Blocks blocks)
     : solver_(solver), cracks_(cracks), blocks_(blocks) {
     const int n3 = 3 * solver.mesh().nodeCount(), m3 = 3 * solver.mesh().triangleCount();
@@ -276,16 +283,17 @@ int CrackSystem::update() {
     const int old3 = 3 * assembledUnknowns_, new3 = 3 * total, added = new3 - old3;
 
     // Surface-crack coupling for the new unknowns: new columns of C, new rows of G.
-    const CrackSurfaceCoupling coupling = assembleCrackSurfaceCoupling(solver_, cracks_, fresh);
+    const QuadratureSettings& q = solver_.settings().quadrature;
+    const MouthSplit split = splitAlongMouths(solver_.mesh(), cracks_, q);
+    const CrackSurfaceCoupling coupling =
+        assembleCoupling(solver_, cracks_, fresh, CouplingBlocks::SurfaceAndLoad, split);
 
     // Crack-crack block D in the new unknowns' columns (their rows follow by symmetry).
     Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(new3, added);
     const double mu = solver_.material().shearModulus(), nu = solver_.material().poissonRatio();
-    const QuadratureSettings& q = solver_.settings().quadrature;
     std::vector<int> all(total);
     for (int k = 0; k < total; ++k) all[k] = k;
-    const std::vector<BasisElement> elements =
-        basisElements(solver_.mesh(), cracks_, all, splitAlongMouths(solver_.mesh(), cracks_, q), q);
+    const std::vector<BasisElement> elements = basisElements(solver_.mesh(), cracks_, all, split, q);
     const int first = assembledUnknowns_;
     auto touchesFresh = [&](const BasisElement& e) {
         return std::any_of(e.unknown.begin(), e.unknown.end(), [&](int k) { return k >= first; });
