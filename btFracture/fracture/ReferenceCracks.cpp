@@ -82,7 +82,8 @@ double edgeCrackFactor(double a, double b) {
 }
 
 SurfaceCrackCase edgeCrackCase(double ratio, int elementsPerDepth, double extension, int crackRefinement) {
-    const double b = kEdgeCrackPlateWidth, a = ratio * b, thickness = kEdgeCrackPlateThickness, sigma = kEdgeCrackTension;
+    const double b = kEdgeCrackPlateWidth, a = ratio * b, thickness = kEdgeCrackPlateThickness,
+                 sigma = kEdgeCrackTension;
     const double h = a / elementsPerDepth;
     SurfaceCrackCase c;
     char name[64];

@@ -146,23 +146,27 @@ std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Ei
         const double h = f.spacing, along = kAlong * h;
         double reach = std::min(kFarRow * h, kSizeReach * extent.at(f.node));
         if (kappa > 0.0) reach = std::min(reach, kCurvedReach / kappa);
-        // Crack nodes near f (grown across the sheet from f's triangles while within 5.5 h),
-        // and the front edges among their triangles.
-        std::set<int> region, nearFront, nodes;
-        std::vector<int> queue(cracks.trianglesAtNode(f.node).begin(), cracks.trianglesAtNode(f.node).end());
-        region.insert(queue.begin(), queue.end());
-        for (std::size_t q = 0; q < queue.size(); ++q)
-            for (int v : cracks.triangle(queue[q])) {
-                if (const auto it = edgesAtNode.find(v); it != edgesAtNode.end())
-                    nearFront.insert(it->second.begin(), it->second.end());
-                if (!cracks.isFront(v)) nodes.insert(v);
-                if ((cracks.node(v) - f.position).norm() > (kFarRow + 1.0) * h) continue;
-                for (int t : cracks.trianglesAtNode(v))
-                    if (region.insert(t).second) queue.push_back(t);
-            }
         // One-parameter least squares per mode: cod = c K sqrt(r / 2 pi) sqrt(1 - kappa r / 2)
         // over the nodes in the window (c = 8 / E' for modes I and II, 4 / mu for mode III).
-        auto fit = [&](double near, double far, double curvature) {
+        // A front resolved by fewer than kResolvedRows rows within the reach (a small, young or
+        // strongly curved sheet), or with no node in the window, keeps the first row.
+        Eigen::Vector3d k = firstRow.at(f.node);
+        if (reach >= kResolvedRows * h) {
+            // Crack nodes near f (grown across the sheet from f's triangles while within 5.5 h),
+            // and the front edges among their triangles.
+            std::set<int> region, nearFront, nodes;
+            std::vector<int> queue(cracks.trianglesAtNode(f.node).begin(),
+                                   cracks.trianglesAtNode(f.node).end());
+            region.insert(queue.begin(), queue.end());
+            for (std::size_t q = 0; q < queue.size(); ++q)
+                for (int v : cracks.triangle(queue[q])) {
+                    if (const auto it = edgesAtNode.find(v); it != edgesAtNode.end())
+                        nearFront.insert(it->second.begin(), it->second.end());
+                    if (!cracks.isFront(v)) nodes.insert(v);
+                    if ((cracks.node(v) - f.position).norm() > (kFarRow + 1.0) * h) continue;
+                    for (int t : cracks.trianglesAtNode(v))
+                        if (region.insert(t).second) queue.push_back(t);
+                }
             double gg = 0.0;
             Eigen::Vector3d gc = Eigen::Vector3d::Zero();
             for (int v : nodes) {
@@ -171,24 +175,17 @@ std::vector<FrontSifs> displacementCorrelation(const CrackMesh& cracks, const Ei
                 for (int i : nearFront)
                     r = std::min(r, segmentDistance(x, cracks.node(front[i].a), cracks.node(front[i].b)));
                 const double s = std::abs((x - f.position).dot(f.frame.tangent));
-                if (!(r > near) || r > far || s >= along) continue;
+                if (!(r > kNearRow * h) || r > reach || s >= along) continue;
                 const double w = 1.0 - s / along;
-                const double g = std::sqrt(r / (2.0 * M_PI) * std::max(0.1, 1.0 - 0.5 * curvature * r));
+                const double g = std::sqrt(r / (2.0 * M_PI) * std::max(0.1, 1.0 - 0.5 * kappa * r));
                 const Eigen::Vector3d jump = cod.segment<3>(3 * v);
                 gg += w * g * g;
                 gc += w * g *
                       Eigen::Vector3d(jump.dot(f.frame.normal), jump.dot(f.frame.ahead),
                                       jump.dot(f.frame.tangent));
             }
-            return gg > 0.0
-                       ? Eigen::Vector3d(gc / gg)
-                       : Eigen::Vector3d(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
-        };
-        // A front resolved by fewer than kResolvedRows rows within the reach (a small, young or
-        // strongly curved sheet), or with no node in the window: the first row.
-        Eigen::Vector3d k = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-        if (reach >= kResolvedRows * h) k = fit(kNearRow * h, reach, kappa);
-        if (!k.allFinite()) k = firstRow.at(f.node);
+            if (gg > 0.0) k = gc / gg;
+        }
         f.KI = Ep / 8.0 * k(0);
         f.KII = Ep / 8.0 * k(1);
         f.KIII = mu / 4.0 * k(2);
