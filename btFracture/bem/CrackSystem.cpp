@@ -295,9 +295,10 @@ int CrackSystem::update() {
     for (int k = 0; k < total; ++k) all[k] = k;
     const std::vector<BasisElement> elements = basisElements(solver_.mesh(), cracks_, all, split, q);
     const int first = assembledUnknowns_;
-    auto touchesFresh = [&](const BasisElement& e) {
-        return std::any_of(e.unknown.begin(), e.unknown.end(), [&](int k) { return k >= first; });
-    };
+    std::vector<char> touchesFresh(elements.size());
+    for (std::size_t e = 0; e < elements.size(); ++e)
+        touchesFresh[e] = std::any_of(elements[e].unknown.begin(), elements[e].unknown.end(),
+                                      [&](int k) { return k >= first; });
     // Each unordered pair once (bit-exact symmetry of D); its block and the transposed block,
     // each entry kept where its column is a new unknown.
     auto addBlock = [&](const BasisElement& x, const BasisElement& y, const PairCoefficients& coeff,
@@ -326,7 +327,7 @@ int CrackSystem::update() {
     const int count = static_cast<int>(elements.size());
     for (int x = 0; x < count; ++x)
         for (int y = x; y < count; ++y)
-            if (touchesFresh(elements[x]) || touchesFresh(elements[y])) pairs.emplace_back(x, y);
+            if (touchesFresh[x] || touchesFresh[y]) pairs.emplace_back(x, y);
     std::vector<PairCoefficients> coeffs(pairs.size());
 #pragma omp parallel for schedule(dynamic, 64)
     for (int i = 0; i < static_cast<int>(pairs.size()); ++i)

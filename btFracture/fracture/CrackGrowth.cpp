@@ -47,6 +47,46 @@ Eigen::Vector3d frontTangent(const CrackMesh& cracks, const std::map<int, std::p
     return t.norm() > 0.0 ? Eigen::Vector3d(t.normalized()) : Eigen::Vector3d::Zero();
 }
 
+// Whether triangle (a, b, c) turns less than 120 degrees from the crack normal n it grows from
+// (a kink turns it by at most 70.5 degrees; a triangle laid back over the sheet by 180).
+bool keepsSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, const Eigen::Vector3d& n) {
+    return (b - a).cross(c - a).normalized().dot(n) > -0.5;
+}
+
+// Drops from `targets` the moves whose strip triangles would fold back over the sheet (a node
+// stepping behind its front edge, or two neighbours crossing), one node at a time until none
+// folds; such nodes stay where they are for this step. A folded sheet has an indefinite
+// crack-crack block (Eq. 4), so FULL's Schur complement loses its Cholesky factor. Returns the
+// number of nodes held.
+template <class Targets>
+int holdFoldingNodes(const CrackMesh& cracks, Targets& targets) {
+    int held = 0;
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (const auto& e : cracks.frontEdges()) {
+            const auto ia = targets.find(e.a), ib = targets.find(e.b);
+            const bool movesA = ia != targets.end(), movesB = ib != targets.end();
+            if (!movesA && !movesB) continue;
+            const Eigen::Vector3d n = cracks.normal(e.triangle);
+            const Eigen::Vector3d a = cracks.node(e.a), b = cracks.node(e.b);
+            const Eigen::Vector3d a1 = movesA ? ia->second.position : a, b1 = movesB ? ib->second.position : b;
+            // The strip's triangles as growFronts adds them; the node of the first that folds stays.
+            auto hold = targets.end();
+            if (movesA && movesB)
+                hold = !keepsSide(b, a, a1, n) ? ia : !keepsSide(b, a1, b1, n) ? ib : targets.end();
+            else if (movesA)
+                hold = keepsSide(a, a1, b, n) ? targets.end() : ia;
+            else
+                hold = keepsSide(b, a, b1, n) ? targets.end() : ib;
+            if (hold == targets.end()) continue;
+            targets.erase(hold);
+            ++held;
+            changed = true;
+        }
+    }
+    return held;
+}
+
 // Adds triangle (apex, from, to), whose edge from -> to becomes front, split at its midpoint
 // when longer than maxEdge (the apex stays the same, so the orientation is kept). A midpoint
 // outside the body (nodes sliding on a slightly wavy face, or an edge across a concave part)
@@ -75,7 +115,8 @@ int addFrontTriangle(CrackMesh& cracks, int apex, int from, int to, double maxEd
 }  // namespace
 
 GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& advances,
-                        const SurfaceMesh& body, double maxEdge, std::vector<char>& arrested) {
+                        const SurfaceMesh& body, double maxEdge, std::vector<char>& arrested,
+                        FoldGuard guard) {
     GrowthResult result;
     arrested.resize(cracks.nodeCount(), 0);
     // Front neighbours of every front node (previous -> node -> next along the front edges).
@@ -91,7 +132,11 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
     // by the part of the rest of its step along that line: the ends of a through crack run along
     // the faces of a thin body instead of stopping there. It is arrested only when nothing is left
     // of the slide (a front arriving square to the surface, or a corner).
-    std::map<int, int> moved;  // old front node -> new node
+    struct Target {
+        Eigen::Vector3d position;
+        bool stops;
+    };
+    std::map<int, Target> targets;  // old front node -> where it moves
     for (const auto& [node, advance] : advances) {
         if (advance.distance <= 0.0 || arrested[node]) continue;
         const Eigen::Vector3d p = cracks.node(node);
@@ -117,11 +162,16 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
             ++result.arrestedNodes;
             continue;
         }
-        const int fresh = cracks.addNode(target);
-        arrested.push_back(stops ? 1 : 0);
-        if (stops) ++result.arrestedNodes;
+        targets[node] = {target, stops};
+    }
+    if (guard == FoldGuard::Hold) result.heldNodes = holdFoldingNodes(cracks, targets);
+    std::map<int, int> moved;  // old front node -> new node
+    for (const auto& [node, target] : targets) {
+        const int fresh = cracks.addNode(target.position);
+        arrested.push_back(target.stops ? 1 : 0);
+        if (target.stops) ++result.arrestedNodes;
         moved[node] = fresh;
-        result.advanced[node] = (target - p).norm();
+        result.advanced[node] = (target.position - cracks.node(node)).norm();
     }
     result.advancedNodes = static_cast<int>(moved.size());
     result.newNode = moved;

@@ -7,7 +7,9 @@
 // moves to just inside it; a front node outside it never moves). A front node that
 // would cross another crack stops there and is arrested for good; one that would leave the body
 // stops just inside it and slides along the surface as far as its crack plane allows (the ends of
-// a through crack run along the faces), and is arrested when no slide is left.
+// a through crack run along the faces), and is arrested when no slide is left. With the fold
+// guard, a node whose new triangles would fold back over the sheet (a step behind its front edge,
+// neighbours crossing) stays where it is for that step.
 #include <btFracture/bem/CrackMesh.h>
 #include <btFracture/bem/SurfaceMesh.h>
 #include <btFracture/fracture/PropagationLaw.h>
@@ -21,14 +23,20 @@ struct GrowthResult {
     int advancedNodes = 0;
     int newTriangles = 0;
     int arrestedNodes = 0;           // newly arrested in this step
+    int heldNodes = 0;               // not moved in this step: their strip would fold the sheet
     std::map<int, double> advanced;  // old front node -> distance it moved [m]
     std::map<int, int> newNode;      // old front node -> the node it moved to
 };
+
+// Whether nodes whose strip would fold the sheet are held (see above). FULL needs it: a folded
+// sheet makes its Schur complement indefinite. EST grows as the steps say.
+enum class FoldGuard { Hold, Off };
 
 // `advances[node]` holds the motion of each front node (distance 0 = stays). `arrested` (per
 // crack node, grown as needed) marks nodes that never move again. New front edges longer than
 // `maxEdge` [m] are split.
 GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& advances,
-                        const SurfaceMesh& body, double maxEdge, std::vector<char>& arrested);
+                        const SurfaceMesh& body, double maxEdge, std::vector<char>& arrested,
+                        FoldGuard guard = FoldGuard::Hold);
 
 }  // namespace btfracture

@@ -203,8 +203,9 @@ FractureStepRecord FractureSolver::step(int index) {
                     std::clamp((stop - cracks_.node(node)).dot(a->second.direction), 0.0, a->second.distance);
         }
     }
-    const GrowthResult growth = growFronts(cracks_, advances, solver_.mesh(),
-                                           1.5 * settings_.frontEdgeLength * elementSize_, arrested_);
+    const GrowthResult growth =
+        growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * elementSize_, arrested_,
+                   active_ == FractureMethod::Full ? FoldGuard::Hold : FoldGuard::Off);
     int stopped = 0;
     for (const int node : stopAfter) {
         const auto moved = growth.newNode.find(node);
@@ -219,7 +220,7 @@ FractureStepRecord FractureSolver::step(int index) {
     record.growthSeconds = timer.seconds();
     record.crackTriangles = cracks_.triangleCount();
     logf(LogLevel::Debug, "fracture: step ", index, " ", toString(active_), ": ", record.frontNodes,
-         " front nodes, ", record.advancedNodes, " advanced, ", record.arrestedNodes, " arrested, max K/Kc ",
+         " front nodes, ", record.advancedNodes, " advanced, ", record.arrestedNodes, " arrested, ", growth.heldNodes, " held (would fold), max K/Kc ",
          record.maxLoadRatio, ", ", record.crackTriangles, " crack triangles");
     return record;
 }
