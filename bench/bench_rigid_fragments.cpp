@@ -10,7 +10,9 @@
 //    createPredictiveContacts), activation, and what is left outside Bullet's zones (fragment
 //    shapes, separation, the discarded step of a fracture event, energy audits);
 //  - narrowphase per shape pair: the dispatcher's near callback timed per pair of Bullet shape
-//    types.
+//    types, with the count of pairs left without contact points (apart);
+//  - the CCD sweeps: Bullet's swept-sphere tests of the bodies that move more than their CCD
+//    motion threshold in a step, in integration and in the predictive contacts.
 // Prints METRIC rigid_ms_per_step_400_fragments (rigid ms per step of the default scene; the
 // scene's path instead of "400_fragments" for another scene), the rigid share of the step time,
 // the bodies at the end and the per-phase times.
@@ -32,8 +34,11 @@
 #include <btFracture/io/SceneWorld.h>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
+#include <BulletCollision/BroadphaseCollision/btCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletCollision/CollisionShapes/btCollisionShape.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 #include <LinearMath/btQuickprof.h>
 
@@ -57,6 +62,7 @@ using Clock = std::chrono::steady_clock;
 struct ZoneTimes {
     std::vector<std::pair<const char*, Clock::time_point>> open;
     std::map<std::string, double> seconds;
+    std::map<std::string, long> entries;
 };
 ZoneTimes zones;
 
@@ -68,22 +74,38 @@ void leaveZone() {
     const auto [name, start] = zones.open.back();
     zones.open.pop_back();
     zones.seconds[name] += std::chrono::duration<double>(Clock::now() - start).count();
+    ++zones.entries[name];
 }
 
-// Narrowphase time per pair of shape type names [s] and the pairs' count.
-std::map<std::string, std::pair<double, long>> pairTimes;
+// Narrowphase time per pair of shape types [s], the pairs' count and the count of those without
+// contact points after the call; keyed by the types, named by Bullet's shape names.
+struct PairTime {
+    std::string name;
+    double seconds = 0.0;
+    long pairs = 0, apart = 0;
+};
+std::map<std::pair<int, int>, PairTime> pairTimes;
 
 void timedNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
                        const btDispatcherInfo& info) {
-    const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
-    const auto* b = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
-    std::string x = a->getCollisionShape()->getName(), y = b->getCollisionShape()->getName();
-    if (y < x) std::swap(x, y);
     const auto start = Clock::now();
     btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
-    auto& entry = pairTimes[x + " - " + y];
-    entry.first += std::chrono::duration<double>(Clock::now() - start).count();
-    ++entry.second;
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const btCollisionShape* a =
+        static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject)->getCollisionShape();
+    const btCollisionShape* b =
+        static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject)->getCollisionShape();
+    if (b->getShapeType() < a->getShapeType()) std::swap(a, b);
+    PairTime& entry = pairTimes[{a->getShapeType(), b->getShapeType()}];
+    if (entry.name.empty()) entry.name = std::string(a->getName()) + " - " + b->getName();
+    entry.seconds += seconds;
+    ++entry.pairs;
+    static btManifoldArray manifolds;
+    manifolds.resize(0);
+    if (pair.m_algorithm) pair.m_algorithm->getAllContactManifolds(manifolds);
+    int points = 0;
+    for (int i = 0; i < manifolds.size(); ++i) points += manifolds[i]->getNumContacts();
+    if (points == 0) ++entry.apart;
 }
 
 double zone(const char* name) {
@@ -157,15 +179,24 @@ int main(int argc, char** argv) {
     const double fracture = fractureWorld->fractureStatistics().fractureSeconds();
     const double rigid = stepSeconds - fracture;
     const double perStep = 1e3 / scene.world.steps;
-    int active = 0, asleep = 0;
+    int active = 0, asleep = 0, hulls = 0, maxCorners = 0;
+    long corners = 0;
     for (const auto& body : world.bodies()) {
         if (body.rigidBody->isStaticOrKinematicObject()) continue;
         (body.rigidBody->isActive() ? active : asleep) += 1;
+        if (const auto* hull = dynamic_cast<const btConvexHullShape*>(body.rigidBody->getCollisionShape())) {
+            ++hulls;
+            corners += hull->getNumPoints();
+            maxCorners = std::max(maxCorners, hull->getNumPoints());
+        }
     }
     const std::string tag = defaultScene ? std::string("400_fragments") : scene.name;
     const FractureStatistics& stats = fractureWorld->fractureStatistics();
     std::printf("scene %s: %d steps, %d fracture events, %zu bodies at the end (%d awake, %d asleep)\n",
                 file.c_str(), scene.world.steps, recorder.events(), world.bodies().size(), active, asleep);
+    // A hull's corners are what every support query of GJK and of the CCD sweeps loops over.
+    std::printf("convex hull bodies at the end %d, %.1f corners on average, %d at most\n", hulls,
+                hulls > 0 ? double(corners) / hulls : 0.0, maxCorners);
     std::printf("engine calls %llu (%llu without fragments), Bullet's own steps %.3f ms per step\n",
                 static_cast<unsigned long long>(stats.engineCalls),
                 static_cast<unsigned long long>(stats.engineCalls - stats.fractureEvents),
@@ -188,12 +219,22 @@ int main(int argc, char** argv) {
                                                      {"activation", activation},   {"outside_bullet", rest}};
     for (const auto& [name, seconds] : phases)
         std::printf("METRIC rigid_%s_ms_per_step_%s %.3f ms\n", name, tag.c_str(), seconds * perStep);
-    std::vector<std::pair<std::string, std::pair<double, long>>> pairs(pairTimes.begin(), pairTimes.end());
-    std::sort(pairs.begin(), pairs.end(),
-              [](const auto& a, const auto& b) { return a.second.first > b.second.first; });
-    for (const auto& [name, entry] : pairs)
-        std::printf("  narrowphase %-40s %8.3f ms per step, %8.1f pairs per step, %6.2f us per pair\n",
-                    name.c_str(), entry.first * perStep, double(entry.second) / scene.world.steps,
-                    entry.second > 0 ? 1e6 * entry.first / double(entry.second) : 0.0);
+    std::vector<PairTime> pairs;
+    for (const auto& [types, entry] : pairTimes) pairs.push_back(entry);
+    std::sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) { return a.seconds > b.seconds; });
+    for (const PairTime& entry : pairs)
+        std::printf("  narrowphase %-40s %8.3f ms per step, %8.1f pairs per step (%8.1f without "
+                    "contact points), %6.2f us per pair\n",
+                    entry.name.c_str(), entry.seconds * perStep, double(entry.pairs) / scene.world.steps,
+                    double(entry.apart) / scene.world.steps,
+                    entry.pairs > 0 ? 1e6 * entry.seconds / double(entry.pairs) : 0.0);
+    // Bullet's swept-sphere tests of the bodies that move more than their CCD motion threshold.
+    for (const char* sweep : {"CCD motion clamping", "predictive convexSweepTest"}) {
+        const auto found = zones.entries.find(sweep);
+        const long count = found == zones.entries.end() ? 0 : found->second;
+        std::printf("  %-28s %8.3f ms per step, %8.1f sweeps per step, %6.2f us per sweep\n", sweep,
+                    zone(sweep) * perStep, double(count) / scene.world.steps,
+                    count > 0 ? 1e6 * zone(sweep) / double(count) : 0.0);
+    }
     return 0;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/NewPairMultipoint.h>
 
+#include <btFracture/dynamics/SeparatedPairCache.h>
+
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btCollisionConfiguration.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
@@ -8,8 +10,10 @@
 #include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btConvexPlaneCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
+#include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
+#include <memory>
 #include <vector>
 
 namespace btfracture {
@@ -22,7 +26,8 @@ struct Perturbation {
 // Makes one of Bullet's convex algorithms on a given manifold with given perturbation settings.
 class PhasedCreateFunc : public btCollisionAlgorithmCreateFunc {
 public:
-    explicit PhasedCreateFunc(Perturbation plain) : plain_(plain) {}
+    // `separable`: the algorithm may be skipped while the pair is apart (SeparatedPairCache).
+    PhasedCreateFunc(Perturbation plain, bool separable) : plain_(plain), separable_(separable) {}
     virtual btCollisionAlgorithm* make(btCollisionAlgorithmConstructionInfo& ci,
                                        const btCollisionObjectWrapper* a, const btCollisionObjectWrapper* b,
                                        btPersistentManifold* manifold, Perturbation perturbation) = 0;
@@ -30,18 +35,25 @@ public:
                                                    const btCollisionObjectWrapper* a,
                                                    const btCollisionObjectWrapper* b) override;
     Perturbation plain() const { return plain_; }
+    bool separable() const { return separable_; }
 
 private:
     Perturbation plain_;
+    bool separable_;
 };
 
 // Runs the perturbed algorithm for the first kPerturbedSteps calls, then the plain one (between
-// two moving bodies), both on one manifold (its own, unless a compound parent shares one).
+// two moving bodies), both on one manifold (its own, unless a compound parent shares one). A
+// convex pair on its own manifold skips the calls that cannot find a contact.
 class PhasedAlgorithm : public btCollisionAlgorithm {
 public:
     PhasedAlgorithm(btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* a,
                     const btCollisionObjectWrapper* b, PhasedCreateFunc& func)
-        : btCollisionAlgorithm(ci), ownManifold_(ci.m_manifold == nullptr) {
+        : btCollisionAlgorithm(ci),
+          ownManifold_(ci.m_manifold == nullptr),
+          plainIterations_(func.plain().iterations) {
+        // Kept out of the dispatcher's pool, whose elements are sized for Bullet's algorithms.
+        if (func.separable() && ownManifold_) cache_ = std::make_unique<SeparatedPairCache>();
         // The manifold's body order is the algorithm's own (convex first for a plane pair), from
         // which btManifoldResult orients the normals.
         const btCollisionObject* first = (func.m_swapped ? b : a)->getCollisionObject();
@@ -65,10 +77,18 @@ public:
     }
     void processCollision(const btCollisionObjectWrapper* a, const btCollisionObjectWrapper* b,
                           const btDispatcherInfo& info, btManifoldResult* result) override {
-        btCollisionAlgorithm* algorithm =
-            !plain_ || steps_ < NewPairMultipoint::kPerturbedSteps ? perturbed_ : plain_;
+        const bool plain = plain_ && steps_ >= NewPairMultipoint::kPerturbedSteps;
         if (steps_ < NewPairMultipoint::kPerturbedSteps) ++steps_;
-        algorithm->processCollision(a, b, info, result);
+        // A perturbed query turns one body so that none of its points moves more than
+        // gContactBreakingThreshold (btConvexConvexAlgorithm's perturbation angle); its GJK reports
+        // points up to both margins beyond the threshold, and mapped back to the unturned body such
+        // a point may land within the threshold.
+        const int iterations = plain ? plainIterations_ : NewPairMultipoint::kIterations;
+        const btScalar reach = iterations == 0 ? btScalar(0)
+                                               : gContactBreakingThreshold + a->getCollisionShape()->getMargin() +
+                                                     b->getCollisionShape()->getMargin();
+        if (cache_ && cache_->apart(*a, *b, *manifold_, reach)) return;
+        (plain ? plain_ : perturbed_)->processCollision(a, b, info, result);
         // Bullet's algorithms leave refreshing a manifold they do not own to its owner.
         if (ownManifold_ && manifold_->getNumContacts() > 0) {
             result->setPersistentManifold(manifold_);
@@ -85,10 +105,12 @@ public:
 
 private:
     bool ownManifold_;
+    int plainIterations_;
     btPersistentManifold* manifold_ = nullptr;
     btCollisionAlgorithm* perturbed_ = nullptr;
     btCollisionAlgorithm* plain_ = nullptr;
     int steps_ = 0;
+    std::unique_ptr<SeparatedPairCache> cache_;
 };
 
 btCollisionAlgorithm* PhasedCreateFunc::CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& ci,
@@ -102,7 +124,8 @@ class PhasedConvexConvex : public PhasedCreateFunc {
 public:
     explicit PhasedConvexConvex(const btConvexConvexAlgorithm::CreateFunc& original)
         : PhasedCreateFunc(
-              {original.m_numPerturbationIterations, original.m_minimumPointsPerturbationThreshold}),
+              {original.m_numPerturbationIterations, original.m_minimumPointsPerturbationThreshold},
+              /*separable=*/true),
           solver_(original.m_pdSolver) {}
     btCollisionAlgorithm* make(btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* a,
                                const btCollisionObjectWrapper* b, btPersistentManifold* manifold,
@@ -120,7 +143,8 @@ class PhasedConvexPlane : public PhasedCreateFunc {
 public:
     explicit PhasedConvexPlane(const btConvexPlaneCollisionAlgorithm::CreateFunc& original)
         : PhasedCreateFunc(
-              {original.m_numPerturbationIterations, original.m_minimumPointsPerturbationThreshold}) {
+              {original.m_numPerturbationIterations, original.m_minimumPointsPerturbationThreshold},
+              /*separable=*/false) {
         m_swapped = original.m_swapped;
     }
     btCollisionAlgorithm* make(btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* a,

@@ -6,7 +6,9 @@
 // manifold instead of one point per step (which lets it sink and tip: popping). Afterwards a pair
 // of two moving bodies continues on the same manifold with the configuration's own settings, so
 // neighbours that stay apart do not pay three extra GJK queries per step for the rest of their
-// lives; a pair with static or kinematic geometry (the ground) keeps perturbing.
+// lives; a pair with static or kinematic geometry (the ground) keeps perturbing. A convex pair on
+// its own manifold skips the calls that cannot find a contact (SeparatedPairCache), in either
+// phase.
 // Covered: the shape pairs that use the configuration's convex-convex and convex-plane create
 // functions of convex hulls (in Bullet's default configuration every convex pair without a
 // special algorithm, boxes included); configurations whose functions are not Bullet's are left

@@ -12,6 +12,7 @@
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/HertzContact.h>
 #include <btFracture/dynamics/NewPairMultipoint.h>
+#include <btFracture/dynamics/SeparatedConvexPairs.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/geometry/ConvexHull.h>
 
@@ -279,8 +280,11 @@ btFractureDynamicsWorld::btFractureDynamicsWorld(btDispatcher* dispatcher, btBro
     : btDiscreteDynamicsWorld(dispatcher, pairCache, constraintSolver, collisionConfiguration),
       defaultMaterial_(Material::steel()),
       collisionConfiguration_(collisionConfiguration) {
-    if (auto* collisionDispatcher = dynamic_cast<btCollisionDispatcher*>(dispatcher))
+    if (auto* collisionDispatcher = dynamic_cast<btCollisionDispatcher*>(dispatcher)) {
         btGImpactCollisionAlgorithm::registerAlgorithm(collisionDispatcher);
+        if (collisionConfiguration)
+            separatedPairs_ = std::make_unique<SeparatedConvexPairs>(*collisionDispatcher, *collisionConfiguration);
+    }
 }
 
 btFractureDynamicsWorld::~btFractureDynamicsWorld() {
@@ -705,6 +709,7 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
         const SplitImpulseBelowDepth split(getSolverInfo(), splitImpulseForFragments_, splitImpulseDepth_);
         btDiscreteDynamicsWorld::internalSingleStepSimulation(timeStep);
     }
+    if (separatedPairs_) separatedPairs_->install();  // NewPairMultipoint put back the configuration's
     replaying_ = false;
     ++stats_.replayedSteps;
 

@@ -59,7 +59,8 @@
 // which deletes it. A world-owned parent is deleted after the listeners ran.
 //
 // Dispatcher: when it is a btCollisionDispatcher, btGImpactCollisionAlgorithm is registered so that
-// CollisionShapeKind::GImpactMesh shapes collide.
+// CollisionShapeKind::GImpactMesh shapes collide, and convex pairs that cannot touch skip Bullet's
+// convex-convex algorithm (SeparatedConvexPairs).
 #include <btFracture/core/Material.h>
 #include <btFracture/dynamics/FractureEngine.h>
 #include <btFracture/dynamics/FractureListener.h>
@@ -74,6 +75,7 @@
 namespace btfracture {
 
 class btFractureRigidBody;
+class SeparatedConvexPairs;
 
 class btFractureDynamicsWorld : public btDiscreteDynamicsWorld {
 public:
@@ -153,6 +155,7 @@ private:
     bool missingEngineLogged_ = false;
     Material defaultMaterial_;
     btCollisionConfiguration* collisionConfiguration_;
+    std::unique_ptr<SeparatedConvexPairs> separatedPairs_;
     std::vector<FractureListener*> listeners_;
     FractureStatistics stats_;
     std::uint64_t stepStamp_ = 0;
