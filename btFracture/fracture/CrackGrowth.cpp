@@ -49,17 +49,23 @@ Eigen::Vector3d frontTangent(const CrackMesh& cracks, const std::map<int, std::p
 
 // Whether triangle (a, b, c) turns less than 120 degrees from the crack normal n it grows from
 // (a kink turns it by at most 70.5 degrees; a triangle laid back over the sheet by 180).
-bool keepsSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, const Eigen::Vector3d& n) {
+bool keepsSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+               const Eigen::Vector3d& n) {
     return (b - a).cross(c - a).normalized().dot(n) > -0.5;
 }
 
-// Drops from `targets` the moves whose strip triangles would fold back over the sheet (a node
-// stepping behind its front edge, or two neighbours crossing), one node at a time until none
-// folds; such nodes stay where they are for this step. A folded sheet has an indefinite
-// crack-crack block (Eq. 4), so FULL's Schur complement loses its Cholesky factor. Returns the
-// number of nodes held.
-template <class Targets>
-int holdFoldingNodes(const CrackMesh& cracks, Targets& targets) {
+// Where a moving front node goes, and whether it stops there for good.
+struct Target {
+    Eigen::Vector3d position;
+    bool stops;
+};
+
+// Drops from `targets` (old front node -> its move) the moves whose strip triangles would fold
+// back over the sheet (a node stepping behind its front edge, or two neighbours crossing), one
+// node at a time until none folds; such nodes stay where they are for this step. A folded sheet
+// has an indefinite crack-crack block (Eq. 4), so FULL's Schur complement loses its Cholesky
+// factor. Returns the number of nodes held.
+int holdFoldingNodes(const CrackMesh& cracks, std::map<int, Target>& targets) {
     int held = 0;
     for (bool changed = true; changed;) {
         changed = false;
@@ -69,7 +75,8 @@ int holdFoldingNodes(const CrackMesh& cracks, Targets& targets) {
             if (!movesA && !movesB) continue;
             const Eigen::Vector3d n = cracks.normal(e.triangle);
             const Eigen::Vector3d a = cracks.node(e.a), b = cracks.node(e.b);
-            const Eigen::Vector3d a1 = movesA ? ia->second.position : a, b1 = movesB ? ib->second.position : b;
+            const Eigen::Vector3d a1 = movesA ? ia->second.position : a,
+                                  b1 = movesB ? ib->second.position : b;
             // The strip's triangles as growFronts adds them; the node of the first that folds stays.
             auto hold = targets.end();
             if (movesA && movesB)
@@ -132,10 +139,6 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
     // by the part of the rest of its step along that line: the ends of a through crack run along
     // the faces of a thin body instead of stopping there. It is arrested only when nothing is left
     // of the slide (a front arriving square to the surface, or a corner).
-    struct Target {
-        Eigen::Vector3d position;
-        bool stops;
-    };
     std::map<int, Target> targets;  // old front node -> where it moves
     for (const auto& [node, advance] : advances) {
         if (advance.distance <= 0.0 || arrested[node]) continue;

@@ -204,8 +204,8 @@ FractureStepRecord FractureSolver::step(int index) {
         }
     }
     const GrowthResult growth =
-        growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * elementSize_, arrested_,
-                   active_ == FractureMethod::Full ? FoldGuard::Hold : FoldGuard::Off);
+        growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * elementSize_,
+                   arrested_, active_ == FractureMethod::Full ? FoldGuard::Hold : FoldGuard::Off);
     int stopped = 0;
     for (const int node : stopAfter) {
         const auto moved = growth.newNode.find(node);
@@ -220,8 +220,9 @@ FractureStepRecord FractureSolver::step(int index) {
     record.growthSeconds = timer.seconds();
     record.crackTriangles = cracks_.triangleCount();
     logf(LogLevel::Debug, "fracture: step ", index, " ", toString(active_), ": ", record.frontNodes,
-         " front nodes, ", record.advancedNodes, " advanced, ", record.arrestedNodes, " arrested, ", growth.heldNodes, " held (would fold), max K/Kc ",
-         record.maxLoadRatio, ", ", record.crackTriangles, " crack triangles");
+         " front nodes, ", record.advancedNodes, " advanced, ", record.arrestedNodes, " arrested, ",
+         growth.heldNodes, " held (would fold), max K/Kc ", record.maxLoadRatio, ", ", record.crackTriangles,
+         " crack triangles");
     return record;
 }
 
