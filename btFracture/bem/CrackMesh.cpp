@@ -19,6 +19,7 @@ int CrackMesh::addNode(const Eigen::Vector3d& position) {
     unknown_.push_back(-1);
     surfaceNode_.push_back(kUnclassified);
     surfaceEdge_.push_back({-1, -1});
+    surfaceTriangle_.push_back(-1);
     return nodeCount() - 1;
 }
 
@@ -94,6 +95,7 @@ std::vector<int> CrackMesh::refreshUnknowns(const SurfaceMesh& body) {
             if (t > 0.0 && t < 1.0 && (a + t * ab - nodes_[i]).norm() <= tolerance)
                 surfaceEdge_[i] = {std::min(tri[k], tri[(k + 1) % 3]), std::max(tri[k], tri[(k + 1) % 3])};
         }
+        if (surfaceNode_[i] < 0 && surfaceEdge_[i][0] < 0) surfaceTriangle_[i] = nearest.triangle;
     }
     return refreshUnknowns();
 }

@@ -4,10 +4,10 @@
 // oriented so that each triangle's normal is the crack normal n_c. The unknown on a node is
 // the crack opening displacement COD = u+ - u- (+ on the side n_c points to). It is zero on
 // front nodes (the sheet's boundary inside the body). A sheet that reaches the body's surface
-// along surface edges opens there: its boundary nodes on surface nodes or on surface edges are
-// mouth nodes and carry unknowns like interior nodes, except where the front meets the surface
-// (a node on the surface next to a front node inside); see FORMULATION.md, "Cracks". Boundary
-// nodes anywhere else, inside surface triangles or outside the body, are front. Sheets only grow by triangles
+// opens there: its boundary nodes on the surface (on a surface node, edge or triangle) are mouth
+// nodes and carry unknowns like interior nodes, except where the front meets the surface (a node
+// on the surface next to a front node inside); see FORMULATION.md, "Cracks". Boundary nodes
+// anywhere else (outside the body) are front. Sheets only grow by triangles
 // attached at their boundary, so an unknown node's support never changes and the crack blocks
 // can be extended incrementally.
 #include <btFracture/bem/PairIntegrals.h>
@@ -26,11 +26,12 @@ public:
     int addTriangle(int a, int b, int c);          // counter-clockwise around n_c
     // Recomputes the front, numbers the unknowns of nodes that became interior or mouth since
     // the last call (existing unknowns keep their numbers) and returns those nodes. Throws if a
-    // sheet is not an edge-manifold open surface. Only nodes matched to a body's surface node or
-    // edge by an earlier call with that body can be mouth nodes.
+    // sheet is not an edge-manifold open surface. Only nodes matched to a body's surface by an
+    // earlier call with that body can be mouth nodes.
     std::vector<int> refreshUnknowns();
-    // The same after matching the nodes not matched yet (nodes never move) to the surface node
-    // or the inside of the surface edge of `body` they lie on (within 1e-9 of its radius).
+    // The same after matching the nodes not matched yet (nodes never move) to the surface node,
+    // the inside of the surface edge or the inside of the surface triangle of `body` they lie on
+    // (within 1e-9 of its radius).
     std::vector<int> refreshUnknowns(const SurfaceMesh& body);
 
     int nodeCount() const { return static_cast<int>(nodes_.size()); }
@@ -42,13 +43,13 @@ public:
     Eigen::Vector3d normal(int t) const;  // crack normal n_c
 
     bool isFront(int i) const { return unknown_[i] < 0; }
-    // On the surface (a surface node or inside a surface edge) and carrying an opening (not where
-    // the front meets the surface).
+    // On the surface and carrying an opening (not where the front meets the surface).
     bool isMouth(int i) const { return onSurface(i) && unknown_[i] >= 0; }
-    bool onSurface(int i) const { return surfaceNode_[i] >= 0 || surfaceEdge_[i][0] >= 0; }
+    bool onSurface(int i) const { return surfaceNode_[i] >= 0 || surfaceEdge_[i][0] >= 0 || surfaceTriangle_[i] >= 0; }
     int surfaceNodeOf(int i) const { return surfaceNode_[i]; }  // -1: none (or not matched yet)
     // The surface edge (lower node first) whose inside the node lies on; {-1, -1}: none.
     const std::array<int, 2>& surfaceEdgeOf(int i) const { return surfaceEdge_[i]; }
+    int surfaceTriangleOf(int i) const { return surfaceTriangle_[i]; }  // inside it; -1: none
     int unknownOf(int i) const { return unknown_[i]; }  // -1 on the front
     int unknownCount() const { return unknownCount_; }
     const std::vector<int>& nodeOfUnknown() const { return nodeOfUnknown_; }
@@ -83,6 +84,7 @@ private:
     static constexpr int kUnclassified = -2;
     std::vector<int> surfaceNode_;  // surface node the crack node lies on, -1 none
     std::vector<std::array<int, 2>> surfaceEdge_;
+    std::vector<int> surfaceTriangle_;
     std::vector<int> nodeOfUnknown_;
     std::vector<FrontEdge> frontEdges_, boundaryEdges_;
     std::vector<int> sheetOfTriangle_;

@@ -3,6 +3,7 @@
 
 #include <btFracture/bem/BoundaryOperators.h>
 #include <btFracture/bem/GalerkinBlocks.h>
+#include <btFracture/bem/MouthCut.h>
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/ParallelProduct.h>
@@ -16,98 +17,61 @@
 namespace btfracture {
 namespace {
 
-// Surface triangles with a crack mouth running along one of their edges through crack nodes
-// inside that edge (FORMULATION.md, "Mouth"): each is split into a fan of pieces from its
-// opposite corner, so that the cut surface hats of those nodes are P1 on the pieces and every
-// pair touching the mouth shares whole edges or corners. Piece ids: surface node ids for surface
-// nodes, nodeCount + crack node for the crack nodes inside the edge.
-struct MouthPiece {
-    QuadraturePanel panel;
-    std::array<int, 3> crackNode;  // crack node at each corner, -1: none
+// Surface curl N x grad(f) of the linear function with corner values v on a flat panel with
+// operator normal N (any corner order).
+Eigen::Vector3d pieceCurl(const Panel& p, const std::array<double, 3>& v) {
+    const Eigen::Vector3d twiceArea = (p.corners[1] - p.corners[0]).cross(p.corners[2] - p.corners[0]);
+    const Eigen::Vector3d unit = twiceArea.normalized();
+    Eigen::Vector3d grad = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+        grad += v[k] * unit.cross(p.corners[(k + 2) % 3] - p.corners[(k + 1) % 3]) / twiceArea.norm();
+    return p.normal.cross(grad);
+}
+
+// One crack basis function restricted to an element: its unknown, its constant surface curl and
+// its values at the element's corners.
+struct Restriction {
+    int unknown;
+    Eigen::Vector3d curl;
+    std::array<double, 3> values;
 };
-using MouthSplit = std::map<int, std::vector<MouthPiece>>;  // surface triangle -> pieces
 
-MouthSplit splitAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks, const QuadratureSettings& q) {
-    const int n = mesh.nodeCount();
-    std::map<std::array<int, 2>, std::vector<std::pair<double, int>>> onEdge;  // -> (t along, crack node)
-    std::map<int, int> crackNodeAt;                                            // surface node -> crack node
-    for (int i = 0; i < cracks.nodeCount(); ++i) {
-        if (cracks.surfaceNodeOf(i) >= 0) crackNodeAt.emplace(cracks.surfaceNodeOf(i), i);
-        const auto& e = cracks.surfaceEdgeOf(i);
-        if (e[0] < 0) continue;
-        const Eigen::Vector3d a = mesh.node(e[0]), ab = mesh.node(e[1]) - a;
-        onEdge[e].emplace_back((cracks.node(i) - a).dot(ab) / ab.squaredNorm(), i);
-    }
-    MouthSplit out;
-    for (auto& [edge, points] : onEdge) {
-        std::sort(points.begin(), points.end());
-        for (int t : mesh.trianglesAtNode(edge[0])) {
-            const auto& tri = mesh.triangle(t);
-            int k = 0;  // the corner where the edge starts in t's orientation
-            while (k < 3 && !((tri[k] == edge[0] && tri[(k + 1) % 3] == edge[1]) ||
-                              (tri[k] == edge[1] && tri[(k + 1) % 3] == edge[0])))
-                ++k;
-            if (k == 3) continue;
-            if (out.count(t))
-                throw Error("crack system: a crack mouth runs along two edges of surface triangle " +
-                            std::to_string(t) + " (not supported)");
-            const int apex = tri[(k + 2) % 3];
-            std::vector<std::pair<int, int>> line;  // (panel id, crack node) from tri[k] to tri[k+1]
-            auto surfaceVertex = [&](int s) {
-                const auto it = crackNodeAt.find(s);
-                return std::pair{s, it == crackNodeAt.end() ? -1 : it->second};
-            };
-            line.push_back(surfaceVertex(tri[k]));
-            const bool forward = tri[k] == edge[0];
-            for (std::size_t j = 0; j < points.size(); ++j) {
-                const int node = points[forward ? j : points.size() - 1 - j].second;
-                line.emplace_back(n + node, node);
-            }
-            line.push_back(surfaceVertex(tri[(k + 1) % 3]));
-            auto position = [&](const std::pair<int, int>& v) {
-                return v.first < n ? mesh.node(v.first) : cracks.node(v.second);
-            };
-            for (std::size_t j = 0; j + 1 < line.size(); ++j) {
-                Panel panel{{line[j].first, line[j + 1].first, apex},
-                            {position(line[j]), position(line[j + 1]), mesh.node(apex)},
-                            mesh.normal(t),
-                            0.0};
-                panel.area =
-                    0.5 *
-                    (panel.corners[1] - panel.corners[0]).cross(panel.corners[2] - panel.corners[0]).norm();
-                out[t].push_back({QuadraturePanel(panel, q), {line[j].second, line[j + 1].second, -1}});
-            }
-        }
-    }
-    return out;
-}
-
-// Surface curl n x grad(lambda_k) of the barycentric coordinate of corner k of a flat panel.
-Eigen::Vector3d pieceCurl(const Panel& p, int k) {
-    const Eigen::Vector3d edge = p.corners[(k + 2) % 3] - p.corners[(k + 1) % 3];
-    return p.normal.cross(p.normal.cross(edge) / (2.0 * p.area));
-}
-
-// One triangle carrying (parts of) crack basis functions: a crack triangle (crack hats), or a
-// surface triangle or piece of one on the + side of a mouth node (the surface hat of that node
-// cut along the mouth, FORMULATION.md). Panel ids: surface node ids for surface nodes and mouth
-// nodes on them, nodeCount + crack node for the others, so that pairs sharing a node get the
+// One triangle carrying (parts of) crack basis functions: a crack triangle or piece of one (crack
+// hats), or a surface triangle or piece of one on the + side of a mouth (cut surface hats of
+// mouth nodes, FORMULATION.md). Panel ids as MouthCut's, so that pairs sharing a node get the
 // singular rules.
 struct BasisElement {
     QuadraturePanel panel;
-    std::array<Eigen::Vector3d, 3> curl;
-    std::array<int, 3> unknown;  // crack unknown of each corner, -1: none
-    int surfaceTriangle;         // the surface triangle it lies on, -1 for a crack triangle
+    std::vector<Restriction> functions;
+    int surfaceTriangle;  // the surface triangle it lies on, -1 for a crack triangle
 };
+
+// The element of a mouth piece with the restrictions of the crack unknowns in `wanted`.
+BasisElement pieceElement(const MouthPiece& piece, const CrackMesh& cracks, const std::vector<char>& wanted,
+                          int surfaceTriangle, const QuadratureSettings& q) {
+    BasisElement e{QuadraturePanel(piece.panel, q), {}, surfaceTriangle};
+    for (int k = 0; k < 3; ++k)
+        for (const auto& [node, value] : piece.weights[k]) {
+            const int unknown = cracks.unknownOf(node);
+            if (unknown < 0 || !wanted[unknown] || value == 0.0) continue;
+            auto it = std::find_if(e.functions.begin(), e.functions.end(),
+                                   [&](const Restriction& r) { return r.unknown == unknown; });
+            if (it == e.functions.end()) {
+                e.functions.push_back({unknown, Eigen::Vector3d::Zero(), {0.0, 0.0, 0.0}});
+                it = std::prev(e.functions.end());
+            }
+            it->values[k] = value;
+        }
+    for (Restriction& r : e.functions) r.curl = pieceCurl(piece.panel, r.values);
+    return e;
+}
 
 // The elements of the given unknowns' basis functions.
 std::vector<BasisElement> basisElements(const SurfaceMesh& mesh, const CrackMesh& cracks,
-                                        const std::vector<int>& unknowns, const MouthSplit& split,
+                                        const std::vector<int>& unknowns, const MouthCut& cut,
                                         const QuadratureSettings& q) {
-    const int n = mesh.nodeCount();
-    auto idOf = [&](int node) {
-        return cracks.surfaceNodeOf(node) >= 0 ? cracks.surfaceNodeOf(node) : node + n;
-    };
+    std::vector<char> wanted(cracks.unknownCount(), 0);
+    for (int k : unknowns) wanted[k] = 1;
     std::vector<int> triangles;
     for (int k : unknowns)
         for (int t : cracks.trianglesAtNode(cracks.nodeOfUnknown()[k])) triangles.push_back(t);
@@ -115,57 +79,32 @@ std::vector<BasisElement> basisElements(const SurfaceMesh& mesh, const CrackMesh
     triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
     std::vector<BasisElement> out;
     for (int t : triangles) {
+        const auto pieces = cut.crackPieces.find(t);
+        if (pieces != cut.crackPieces.end()) {
+            for (const MouthPiece& piece : pieces->second) {
+                BasisElement e = pieceElement(piece, cracks, wanted, -1, q);
+                if (!e.functions.empty()) out.push_back(std::move(e));
+            }
+            continue;
+        }
         const auto& tri = cracks.triangle(t);
         Panel panel = cracks.panel(t, 0);
-        for (int k = 0; k < 3; ++k) panel.ids[k] = idOf(tri[k]);
-        BasisElement e{QuadraturePanel(panel, q), {}, {}, -1};
+        for (int k = 0; k < 3; ++k) panel.ids[k] = mouthIdOf(mesh, cracks, tri[k]);
+        BasisElement e{QuadraturePanel(panel, q), {}, -1};
         for (int k = 0; k < 3; ++k) {
-            e.curl[k] = cracks.operatorCurl(t, k);
-            e.unknown[k] = cracks.unknownOf(tri[k]);
+            const int unknown = cracks.unknownOf(tri[k]);
+            if (unknown < 0 || !wanted[unknown]) continue;
+            std::array<double, 3> values{0.0, 0.0, 0.0};
+            values[k] = 1.0;
+            e.functions.push_back({unknown, cracks.operatorCurl(t, k), values});
         }
-        out.push_back(e);
+        out.push_back(std::move(e));
     }
-    std::map<std::pair<int, int>, int> cutHat;  // (surface triangle, piece or -1) -> element
-    auto element = [&](int tau, int piece) -> BasisElement& {
-        auto it = cutHat.find({tau, piece});
-        if (it == cutHat.end()) {
-            it = cutHat.emplace(std::pair{tau, piece}, static_cast<int>(out.size())).first;
-            out.push_back({piece < 0 ? QuadraturePanel(panelOf(mesh, tau), q) : split.at(tau)[piece].panel,
-                           {},
-                           {-1, -1, -1},
-                           tau});
+    for (const auto& [tau, pieces] : cut.surfacePieces)
+        for (const MouthPiece& piece : pieces) {
+            BasisElement e = pieceElement(piece, cracks, wanted, tau, q);
+            if (!e.functions.empty()) out.push_back(std::move(e));
         }
-        return out[it->second];
-    };
-    for (int k : unknowns) {
-        const int node = cracks.nodeOfUnknown()[k];
-        if (!cracks.isMouth(node)) continue;
-        Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-        for (int t : cracks.trianglesAtNode(node)) normal += cracks.normal(t);
-        const int s = cracks.surfaceNodeOf(node);
-        const std::vector<int>& around = mesh.trianglesAtNode(s >= 0 ? s : cracks.surfaceEdgeOf(node)[0]);
-        for (int tau : around) {
-            if ((mesh.centroid(tau) - cracks.node(node)).dot(normal) <= 0.0) continue;
-            const auto pieces = split.find(tau);
-            if (pieces == split.end()) {
-                if (s < 0) continue;  // only the split triangles of its edge carry an edge node's hat
-                BasisElement& e = element(tau, -1);
-                for (int c = 0; c < 3; ++c)
-                    if (mesh.triangle(tau)[c] == s) {
-                        e.curl[c] = mesh.hatCurl(tau, c);
-                        e.unknown[c] = k;
-                    }
-                continue;
-            }
-            for (int p = 0; p < static_cast<int>(pieces->second.size()); ++p)
-                for (int c = 0; c < 3; ++c)
-                    if (pieces->second[p].crackNode[c] == node) {
-                        BasisElement& e = element(tau, p);
-                        e.curl[c] = pieceCurl(e.panel.panel, c);
-                        e.unknown[c] = k;
-                    }
-        }
-    }
     return out;
 }
 
@@ -179,7 +118,7 @@ PairIntegrals integrate(const QuadraturePanel& x, const QuadraturePanel& y, cons
 // assembleCrackSurfaceCoupling with the mouth split already made.
 CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMesh& cracks,
                                       const std::vector<int>& unknowns, CouplingBlocks blocks,
-                                      const MouthSplit& split) {
+                                      const MouthCut& cut) {
     const SurfaceMesh& mesh = solver.mesh();
     const int n = mesh.nodeCount(), m = mesh.triangleCount();
     const double mu = solver.material().shearModulus(), nu = solver.material().poissonRatio();
@@ -189,17 +128,14 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
     const bool withLoad = blocks == CouplingBlocks::SurfaceAndLoad;
     CrackSurfaceCoupling out{Eigen::MatrixXd::Zero(3 * n, 3 * unknowns.size()),
                              Eigen::MatrixXd::Zero(withLoad ? 3 * unknowns.size() : 0, withLoad ? 3 * m : 0)};
-    const std::vector<BasisElement> support = basisElements(mesh, cracks, unknowns, split, q);
-    std::vector<std::array<int, 3>> columns(support.size());
-    for (std::size_t e = 0; e < support.size(); ++e)
-        for (int b = 0; b < 3; ++b) {
-            const auto it = column.find(support[e].unknown[b]);
-            columns[e][b] = it == column.end() ? -1 : 3 * it->second;
-        }
+    const std::vector<BasisElement> support = basisElements(mesh, cracks, unknowns, cut, q);
     // Each element writes only its own unknowns' columns of C and rows of G, but two elements
     // share unknowns: loop over surface triangles in parallel instead, each writing its own
     // nodes' rows of C (coloured) and its own columns of G.
     const std::vector<QuadraturePanel> surfacePanels = quadraturePanels(mesh, q);
+    std::map<int, std::vector<QuadraturePanel>> piecePanels;  // surface triangle -> its pieces
+    for (const auto& [sigma, pieces] : cut.surfacePieces)
+        for (const MouthPiece& piece : pieces) piecePanels[sigma].emplace_back(piece.panel, q);
     const auto colours = colourTrianglesByNodes(mesh);
     for (const auto& group : colours) {
         const int count = static_cast<int>(group.size());
@@ -209,16 +145,16 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
             const QuadraturePanel& surface = surfacePanels[sigma];
             std::array<Eigen::Vector3d, 3> surfaceCurl;
             for (int a = 0; a < 3; ++a) surfaceCurl[a] = mesh.hatCurl(sigma, a);
-            const auto pieces = split.find(sigma);
+            const auto pieces = piecePanels.find(sigma);
             for (std::size_t e = 0; e < support.size(); ++e) {
                 const BasisElement& crack = support[e];
                 // x on the surface (piece by piece where a mouth splits it), y on the element.
                 PairIntegrals pi;
-                if (pieces == split.end()) {
+                if (pieces == piecePanels.end()) {
                     pi = integrate(surface, crack.panel, q, withLoad);
                 } else {
-                    for (const MouthPiece& piece : pieces->second) {
-                        const PairIntegrals part = integrate(piece.panel, crack.panel, q, withLoad);
+                    for (const QuadraturePanel& piece : pieces->second) {
+                        const PairIntegrals part = integrate(piece, crack.panel, q, withLoad);
                         pi.inverseDistance += part.inverseDistance;
                         pi.dyadic += part.dyadic;
                         pi.doubleLayerXY += part.doubleLayerXY;
@@ -226,10 +162,9 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
                     }
                 }
                 const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
-                for (int b = 0; b < 3; ++b) {
-                    const int col = columns[e][b];
-                    if (col < 0) continue;
-                    const Eigen::Vector3d& d = crack.curl[b];
+                for (const Restriction& f : crack.functions) {
+                    const int col = 3 * column.at(f.unknown);
+                    const Eigen::Vector3d& d = f.curl;
                     double P[9];
                     symTimesCross(coeff.L, d.data(), P);
                     for (int a = 0; a < 3; ++a) {
@@ -240,9 +175,11 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
                     // Test function on the element against the traction of sigma (the mass term
                     // only where a cut surface hat lies on sigma itself).
                     if (withLoad) {
-                        const double mass =
-                            crack.surfaceTriangle == sigma ? crack.panel.panel.area / 6.0 : 0.0;
-                        addLoadBlock(d.data(), coeff, mu, mass - pi.doubleLayerXY[b],
+                        const double sum = f.values[0] + f.values[1] + f.values[2];
+                        const double mass = crack.surfaceTriangle == sigma ? crack.panel.panel.area * sum / 6.0 : 0.0;
+                        double doubleLayer = 0.0;
+                        for (int b = 0; b < 3; ++b) doubleLayer += f.values[b] * pi.doubleLayerXY[b];
+                        addLoadBlock(d.data(), coeff, mu, mass - doubleLayer,
                                      [&](int i, int j, double v) { out.G(col + i, 3 * sigma + j) += v; });
                     }
                 }
@@ -256,8 +193,7 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
 
 CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, const CrackMesh& cracks,
                                                   const std::vector<int>& unknowns, CouplingBlocks blocks) {
-    return assembleCoupling(solver, cracks, unknowns, blocks,
-                            splitAlongMouths(solver.mesh(), cracks, solver.settings().quadrature));
+    return assembleCoupling(solver, cracks, unknowns, blocks, cutAlongMouths(solver.mesh(), cracks));
 }
 
 CrackSystem::CrackSystem(const ElasticSolver& solver, CrackMesh& cracks, Blocks blocks)
@@ -284,35 +220,34 @@ int CrackSystem::update() {
 
     // Surface-crack coupling for the new unknowns: new columns of C, new rows of G.
     const QuadratureSettings& q = solver_.settings().quadrature;
-    const MouthSplit split = splitAlongMouths(solver_.mesh(), cracks_, q);
+    const MouthCut cut = cutAlongMouths(solver_.mesh(), cracks_);
     const CrackSurfaceCoupling coupling =
-        assembleCoupling(solver_, cracks_, fresh, CouplingBlocks::SurfaceAndLoad, split);
+        assembleCoupling(solver_, cracks_, fresh, CouplingBlocks::SurfaceAndLoad, cut);
 
     // Crack-crack block D in the new unknowns' columns (their rows follow by symmetry).
     Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(new3, added);
     const double mu = solver_.material().shearModulus(), nu = solver_.material().poissonRatio();
     std::vector<int> all(total);
     for (int k = 0; k < total; ++k) all[k] = k;
-    const std::vector<BasisElement> elements = basisElements(solver_.mesh(), cracks_, all, split, q);
+    const std::vector<BasisElement> elements = basisElements(solver_.mesh(), cracks_, all, cut, q);
     const int first = assembledUnknowns_;
     std::vector<char> touchesFresh(elements.size());
     for (std::size_t e = 0; e < elements.size(); ++e)
-        touchesFresh[e] = std::any_of(elements[e].unknown.begin(), elements[e].unknown.end(),
-                                      [&](int k) { return k >= first; });
+        touchesFresh[e] = std::any_of(elements[e].functions.begin(), elements[e].functions.end(),
+                                      [&](const Restriction& r) { return r.unknown >= first; });
     // Each unordered pair once (bit-exact symmetry of D); its block and the transposed block,
     // each entry kept where its column is a new unknown.
     auto addBlock = [&](const BasisElement& x, const BasisElement& y, const PairCoefficients& coeff,
                         bool transposed) {
-        for (int b = 0; b < 3; ++b) {
-            const int l = y.unknown[b];
-            if (l < 0) continue;
-            const Eigen::Vector3d& d = y.curl[b];
+        for (const Restriction& fy : y.functions) {
+            const int l = fy.unknown;
+            const Eigen::Vector3d& d = fy.curl;
             double P[9];
             symTimesCross(coeff.L, d.data(), P);
-            for (int a = 0; a < 3; ++a) {
-                const int k = x.unknown[a];
-                if (k < 0 || (transposed ? k : l) < first) continue;
-                addStiffnessBlock(x.curl[a].data(), d.data(), P, mu * coeff.a, 1.0,
+            for (const Restriction& fx : x.functions) {
+                const int k = fx.unknown;
+                if ((transposed ? k : l) < first) continue;
+                addStiffnessBlock(fx.curl.data(), d.data(), P, mu * coeff.a, 1.0,
                                   [&](int i, int j, double v) {
                                       if (transposed)
                                           columns(3 * l + j, 3 * (k - first) + i) += v;

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: Zlib
+#pragma once
+// Surface and crack triangles cut along crack mouths (FORMULATION.md, "Mouth"). The mouth line
+// is the set of crack boundary edges whose two nodes lie on the body's surface. Each such edge is
+// followed over the surface where its crack plane cuts it, and every surface triangle it touches
+// or crosses is split into pieces whose edges contain the line (a node inside a triangle splits
+// it in three, a crossing point splits the two triangles of an edge). Every piece corner on the
+// line carries the trace of the crack hats there (1 at a crack node, linear along a crack edge in
+// between); a mouth node's cut surface hat is the P1 function of these values on the pieces on
+// the side its crack normal points to (Γ₊), zero at every other corner. Crack triangles whose
+// boundary edge passes through such points are split at them too, so that every pair of pieces
+// that touches shares whole edges or corners (singular quadrature by ids).
+#include <btFracture/bem/CrackMesh.h>
+#include <btFracture/bem/PairIntegrals.h>
+#include <btFracture/bem/SurfaceMesh.h>
+
+#include <array>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace btfracture {
+
+// Crack node -> value of its crack hat's trace at a point of the mouth line.
+using MouthWeights = std::vector<std::pair<int, double>>;
+
+struct MouthPiece {
+    Panel panel;  // ids: surface node ids, surfaceNodeCount + crack node, or beyond for crossings
+    std::array<MouthWeights, 3> weights;  // per corner; all empty on the - side of the mouth
+};
+
+struct MouthCut {
+    // Surface triangle -> its pieces, for every surface triangle the mouth line splits or whose
+    // cut hats are not zero (a triangle not split has one piece, itself).
+    std::map<int, std::vector<MouthPiece>> surfacePieces;
+    // Crack triangle -> its pieces, for crack triangles whose mouth edges pass through surface
+    // edges or nodes (the pieces' weights then hold the crack hats of its three corners).
+    std::map<int, std::vector<MouthPiece>> crackPieces;
+};
+
+// Surface ids of crack nodes: the surface node a crack node lies on, else nodeCount + crack node.
+int mouthIdOf(const SurfaceMesh& mesh, const CrackMesh& cracks, int crackNode);
+
+// Throws btfracture::Error naming the crack nodes when a mouth edge cannot be followed over the
+// surface (its crack plane does not lead from one node to the other within the body's surface).
+MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks);
+
+}  // namespace btfracture
