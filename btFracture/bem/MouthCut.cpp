@@ -262,13 +262,16 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         const double snap = 1e-6 * length + tolerance;
         std::vector<int>& path = pathOf[{s.a, s.b}];
         int current = localOfCrackNode.at(s.a);
+        // The plane meets the surface in a curve: leave the start toward the other node, then go
+        // on the way the curve goes (it may turn round a corner of the body), never back.
+        Eigen::Vector3d heading = (local.vertices[target].x - local.vertices[current].x).normalized();
+        std::set<int> visited{current};
         for (int guard = 0; !local.hasEdge(current, target); ++guard) {
-            if (guard > 10000 || current == target)
+            if (guard > 1000 || current == target)
                 throw Error("crack mouth: cannot follow the edge from crack node " + std::to_string(s.a) +
                             " to " + std::to_string(s.b) + " over the body's surface");
             const Eigen::Vector3d from = local.vertices[current].x;
-            const Eigen::Vector3d toward = (local.vertices[target].x - from).normalized();
-            double bestScore = 0.0;
+            double bestScore = -0.5;
             int bestVertex = -1;
             std::array<int, 2> bestEdge{-1, -1};
             Eigen::Vector3d bestPoint;
@@ -280,8 +283,8 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
                 const double du = m.dot(local.vertices[u].x - origin), dw = m.dot(local.vertices[w].x - origin);
                 auto consider = [&](const Eigen::Vector3d& x, int vertex, std::array<int, 2> edge) {
                     const Eigen::Vector3d d = x - from;
-                    if (d.norm() <= tolerance) return;
-                    const double score = d.normalized().dot(toward);
+                    if (d.norm() <= tolerance || (vertex >= 0 && visited.count(vertex))) return;
+                    const double score = d.normalized().dot(heading);
                     if (score > bestScore) {
                         bestScore = score;
                         bestVertex = vertex;
@@ -295,7 +298,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
                     consider(local.vertices[u].x + du / (du - dw) * (local.vertices[w].x - local.vertices[u].x), -1,
                              {u, w});
             }
-            if (bestScore <= 0.0)
+            if (bestScore <= -0.5)
                 throw Error("crack mouth: cannot follow the edge from crack node " + std::to_string(s.a) +
                             " to " + std::to_string(s.b) + " over the body's surface");
             // The region cut is closed around the path (both triangles of every edge split).
@@ -308,6 +311,8 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
             else if (local.vertices[bestVertex].weights.empty())
                 local.vertices[bestVertex].weights = weightsAlong(cracks, s.a, s.b, local.vertices[bestVertex].x);
             if (bestVertex != target) path.push_back(bestVertex);
+            heading = (local.vertices[bestVertex].x - from).normalized();
+            visited.insert(bestVertex);
             current = bestVertex;
         }
     }
@@ -318,17 +323,52 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         const auto it = local.vertices[v].id < n ? extension.find(local.vertices[v].id) : extension.end();
         return it == extension.end() ? nullptr : &it->second;
     };
+    // Mouth edges of the cut (local vertex pair -> the crack triangle whose edge it follows).
+    std::map<std::pair<int, int>, int> mouthEdge;
+    for (const Segment& s : segments) {
+        std::vector<int> chain{localOfCrackNode.at(s.a)};
+        const std::vector<int>& path = pathOf.at({s.a, s.b});
+        chain.insert(chain.end(), path.begin(), path.end());
+        chain.push_back(localOfCrackNode.at(s.b));
+        for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+            mouthEdge[{std::min(chain[k], chain[k + 1]), std::max(chain[k], chain[k + 1])}] = s.triangle;
+    }
+    // The side of each piece: from the mouth edge it lies on, else from the nearest mouth point.
+    std::vector<char> plus(local.triangles.size(), 0);
+    for (std::size_t i = 0; i < local.triangles.size(); ++i) {
+        const auto& c = local.triangles[i].corners;
+        const Eigen::Vector3d centroid = (local.vertices[c[0]].x + local.vertices[c[1]].x + local.vertices[c[2]].x) / 3.0;
+        double side = nearestMouth(centroid).side;
+        for (int k = 0; k < 3; ++k) {
+            const auto it = mouthEdge.find({std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])});
+            if (it == mouthEdge.end()) continue;
+            const Eigen::Vector3d on = closestOnSegment(centroid, local.vertices[c[k]].x, local.vertices[c[(k + 1) % 3]].x);
+            side = (centroid - on).dot(cracks.normal(it->second));
+            break;
+        }
+        plus[i] = side > 0.0;
+    }
+    // A surface node off the mouth that has pieces on both sides (beyond the end of the mouth, where
+    // the + and - sides meet without a mouth edge between them) keeps no plateau value: the cut
+    // hats stay continuous there.
+    {
+        std::map<int, int> sides;  // local vertex -> bit 1: on a + piece, bit 2: on a - piece
+        for (std::size_t i = 0; i < local.triangles.size(); ++i)
+            for (int v : local.triangles[i].corners) sides[v] |= plus[i] ? 1 : 2;
+        for (const auto& [v, bits] : sides)
+            if (bits == 3 && local.vertices[v].weights.empty() && local.vertices[v].id < n)
+                extension.erase(local.vertices[v].id);
+    }
     std::map<int, int> pieceCount;
     for (const auto& t : local.triangles) ++pieceCount[t.owner];
-    for (const auto& t : local.triangles) {
+    for (std::size_t i = 0; i < local.triangles.size(); ++i) {
+        const auto& t = local.triangles[i];
         bool weighted = false;
         for (int v : t.corners) weighted |= cornerWeights(v) != nullptr;
         if (!weighted && pieceCount[t.owner] == 1) continue;
         MouthPiece piece{panelOfCorners(local, t.corners, mesh.normal(t.owner)), {}};
         piece.panel.normal = mesh.normal(t.owner);
-        const Eigen::Vector3d centroid =
-            (piece.panel.corners[0] + piece.panel.corners[1] + piece.panel.corners[2]) / 3.0;
-        if (weighted && nearestMouth(centroid).side > 0.0)
+        if (weighted && plus[i])
             for (int k = 0; k < 3; ++k)
                 if (const MouthWeights* w = cornerWeights(t.corners[k])) piece.weights[k] = *w;
         out.surfacePieces[t.owner].push_back(std::move(piece));

@@ -17,13 +17,19 @@ struct Obstacle {
 };
 
 // Where the segment p -> q first leaves the body or meets a crack triangle not touching `node`.
+// From a point on the surface (`fromSurface`), the surface it starts on is not an obstacle unless
+// the segment leaves the body there.
 Obstacle firstObstacle(const CrackMesh& cracks, int node, const Eigen::Vector3d& p, const Eigen::Vector3d& q,
-                       const SurfaceMesh& body) {
+                       const SurfaceMesh& body, bool fromSurface = false) {
     Obstacle o;
+    if (fromSurface) {
+        const SurfaceMesh::Nearest start = body.nearest(p);
+        if (body.normal(start.triangle).dot(q - p) > 0.0) return {0.0, false, start.triangle};
+    }
     for (int s = 0; s < body.triangleCount(); ++s) {
         const auto& tri = body.triangle(s);
         const double hit = segmentTriangleHit(p, q, body.node(tri[0]), body.node(tri[1]), body.node(tri[2]));
-        if (hit >= 0.0 && hit < o.t) o = {hit, false, s};
+        if (hit >= (fromSurface ? 1e-6 : 0.0) && hit < o.t) o = {hit, false, s};
     }
     for (int c = 0; c < cracks.triangleCount(); ++c) {
         const auto& tri = cracks.triangle(c);
@@ -100,12 +106,19 @@ int holdFoldingNodes(const CrackMesh& cracks, std::map<int, Target>& targets) {
 // moves to just inside the surface, or is arrested if that fails: outside, a front would grow
 // on unchecked.
 int addFrontTriangle(CrackMesh& cracks, int apex, int from, int to, double maxEdge, const SurfaceMesh& body,
-                     std::vector<char>& arrested) {
+                     std::vector<char>& arrested, const std::vector<char>& onSurface) {
     if ((cracks.node(to) - cracks.node(from)).norm() <= maxEdge) {
         cracks.addTriangle(apex, from, to);
         return 1;
     }
     Eigen::Vector3d middle = 0.5 * (cracks.node(from) + cracks.node(to));
+    if (onSurface[from] && onSurface[to]) {  // a mouth edge: its midpoint on the surface too
+        const int mid = cracks.addNode(body.nearest(middle).point);
+        arrested.push_back(1);
+        cracks.addTriangle(apex, from, mid);
+        cracks.addTriangle(apex, mid, to);
+        return 2;
+    }
     bool inside = body.encloses(middle);
     if (!inside) {  // to 0.05 maxEdge inside the nearest surface point, along that face's normal
         const SurfaceMesh::Nearest near = body.nearest(middle);
@@ -123,7 +136,7 @@ int addFrontTriangle(CrackMesh& cracks, int apex, int from, int to, double maxEd
 
 GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& advances,
                         const SurfaceMesh& body, double maxEdge, std::vector<char>& arrested,
-                        FoldGuard guard) {
+                        FoldGuard guard, SurfaceReach reach) {
     GrowthResult result;
     arrested.resize(cracks.nodeCount(), 0);
     // Front neighbours of every front node (previous -> node -> next along the front edges).
@@ -139,39 +152,58 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
     // by the part of the rest of its step along that line: the ends of a through crack run along
     // the faces of a thin body instead of stopping there. It is arrested only when nothing is left
     // of the slide (a front arriving square to the surface, or a corner).
+    const bool toSurface = reach == SurfaceReach::OnSurface;
+    const double reachFraction = toSurface ? 1.0 : 0.9;  // of the way to the surface
+    // Nodes on the surface: matched ones, and (filled in below) new nodes placed on it.
+    std::vector<char> onSurface(cracks.nodeCount(), 0);
+    for (int i = 0; i < cracks.nodeCount(); ++i) onSurface[i] = cracks.onSurface(i);
     std::map<int, Target> targets;  // old front node -> where it moves
+    std::map<int, char> targetOnSurface;
     for (const auto& [node, advance] : advances) {
         if (advance.distance <= 0.0 || arrested[node]) continue;
         const Eigen::Vector3d p = cracks.node(node);
         const Eigen::Vector3d step = advance.distance * advance.direction;
-        const Obstacle o = firstObstacle(cracks, node, p, p + step, body);
+        const bool fromSurface = toSurface && onSurface[node];
+        const Obstacle o = firstObstacle(cracks, node, p, p + step, body, fromSurface);
         const bool blocked = o.t < 1.0;
-        Eigen::Vector3d target = p + (blocked ? 0.9 * o.t : 1.0) * step;
+        Eigen::Vector3d target = p + (blocked ? (o.crack ? 0.9 : reachFraction) * o.t : 1.0) * step;
         bool stops = blocked;
+        bool surfaceTarget = toSurface && blocked && !o.crack;
         if (blocked && !o.crack) {
             const SurfaceSlide slide = surfaceSlide(advance.direction, frontTangent(cracks, neighbours, node),
                                                     body.normal(o.surfaceTriangle));
-            const Eigen::Vector3d move = (1.0 - 0.9 * o.t) * advance.distance * slide.along * slide.line;
+            const Eigen::Vector3d move =
+                (1.0 - reachFraction * o.t) * advance.distance * slide.along * slide.line;
             if (slide.slides && move.norm() >= 0.05 * maxEdge) {
-                const Obstacle again = firstObstacle(cracks, node, target, target + move, body);
-                target += (again.t < 1.0 ? 0.9 * again.t : 1.0) * move;
+                const Obstacle again = firstObstacle(cracks, node, target, target + move, body, toSurface);
+                target += (again.t < 1.0 ? (again.crack ? 0.9 : reachFraction) * again.t : 1.0) * move;
+                if (toSurface) target = body.nearest(target).point;  // a curved face
                 stops = again.crack;
+            }
+        }
+        if (toSurface && !blocked) {  // a ligament thinner than the crack mesh resolves breaks
+            const SurfaceMesh::Nearest near = body.nearest(target);
+            if (near.distance < 0.25 * maxEdge && advance.direction.dot(body.normal(near.triangle)) >= 0.5) {
+                target = near.point;
+                surfaceTarget = true;
             }
         }
         // No room left, or the node is (a carried crack reaching past a fragment's surface) or
         // ends outside the body: outside, a front would grow on unchecked.
-        if ((target - p).norm() < 0.05 * maxEdge || !body.encloses(target)) {
+        if ((target - p).norm() < 0.05 * maxEdge || (!surfaceTarget && !body.encloses(target))) {
             arrested[node] = 1;
             ++result.arrestedNodes;
             continue;
         }
         targets[node] = {target, stops};
+        targetOnSurface[node] = surfaceTarget;
     }
     if (guard == FoldGuard::Hold) result.heldNodes = holdFoldingNodes(cracks, targets);
     std::map<int, int> moved;  // old front node -> new node
     for (const auto& [node, target] : targets) {
         const int fresh = cracks.addNode(target.position);
         arrested.push_back(target.stops ? 1 : 0);
+        onSurface.push_back(targetOnSurface[node]);
         if (target.stops) ++result.arrestedNodes;
         moved[node] = fresh;
         result.advanced[node] = (target.position - cracks.node(node)).norm();
@@ -187,11 +219,11 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
         if (movesA && movesB) {
             cracks.addTriangle(e.b, e.a, ia->second);
             result.newTriangles +=
-                1 + addFrontTriangle(cracks, e.b, ia->second, ib->second, maxEdge, body, arrested);
+                1 + addFrontTriangle(cracks, e.b, ia->second, ib->second, maxEdge, body, arrested, onSurface);
         } else if (movesA) {  // new front a' -> b
-            result.newTriangles += addFrontTriangle(cracks, e.a, ia->second, e.b, maxEdge, body, arrested);
+            result.newTriangles += addFrontTriangle(cracks, e.a, ia->second, e.b, maxEdge, body, arrested, onSurface);
         } else if (movesB) {  // new front a -> b'
-            result.newTriangles += addFrontTriangle(cracks, e.b, e.a, ib->second, maxEdge, body, arrested);
+            result.newTriangles += addFrontTriangle(cracks, e.b, e.a, ib->second, maxEdge, body, arrested, onSurface);
         }
     }
     return result;

@@ -4,7 +4,8 @@
 // markers, FractureSolver first shortens the step of a node whose markers all stopped to end
 // level with them): every moving front node gets a new node ahead of it, every front edge a
 // strip of new triangles, and over-long new front edges are split (a midpoint outside the body
-// moves to just inside it; a front node outside it never moves). A front node that
+// moves to just inside it, or onto the surface between two nodes on it; a front node outside it
+// never moves). A front node that
 // would cross another crack stops there and is arrested for good; one that would leave the body
 // stops just inside it and slides along the surface as far as its crack plane allows (the ends of
 // a through crack run along the faces), and is arrested when no slide is left. With the fold
@@ -31,12 +32,18 @@ struct GrowthResult {
 // Whether nodes whose strip would fold the sheet are held (see above). FULL needs it: a folded
 // sheet makes its Schur complement indefinite. EST grows as the steps say.
 enum class FoldGuard { Hold, Off };
+// Where a front that meets the surface stops. Inside: just inside it (0.9 of the way), as EST's
+// embedded-crack estimate needs. OnSurface: on it (FULL, whose sheets open there as mouths,
+// FORMULATION.md), and a node heading for the surface (within 60 degrees of its normal) that would
+// end closer to it than a quarter of the longest front edge goes all the way: a ligament thinner
+// than that is not resolved by the crack mesh.
+enum class SurfaceReach { Inside, OnSurface };
 
 // `advances[node]` holds the motion of each front node (distance 0 = stays). `arrested` (per
 // crack node, grown as needed) marks nodes that never move again. New front edges longer than
 // `maxEdge` [m] are split.
 GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& advances,
                         const SurfaceMesh& body, double maxEdge, std::vector<char>& arrested,
-                        FoldGuard guard = FoldGuard::Hold);
+                        FoldGuard guard = FoldGuard::Hold, SurfaceReach reach = SurfaceReach::Inside);
 
 }  // namespace btfracture

@@ -203,9 +203,10 @@ FractureStepRecord FractureSolver::step(int index) {
                     std::clamp((stop - cracks_.node(node)).dot(a->second.direction), 0.0, a->second.distance);
         }
     }
+    const bool full = active_ == FractureMethod::Full;
     const GrowthResult growth =
-        growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * elementSize_,
-                   arrested_, active_ == FractureMethod::Full ? FoldGuard::Hold : FoldGuard::Off);
+        growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * elementSize_, arrested_,
+                   full ? FoldGuard::Hold : FoldGuard::Off, full ? SurfaceReach::OnSurface : SurfaceReach::Inside);
     int stopped = 0;
     for (const int node : stopAfter) {
         const auto moved = growth.newNode.find(node);

@@ -208,6 +208,10 @@ TriangleMesh growthSlab() {
     return makeBox(Eigen::Vector3d(0.1, 0.05, 0.03), 10, 5, 3);
 }
 
+TriangleMesh embeddedGrowthBlock() {
+    return makeBox(Eigen::Vector3d(0.1, 0.13, 0.13), 10, 13, 13);
+}
+
 Material growthMaterial() {
     return Material(3.1e9, 0.327, 1200.0, 1e9, 1e3, 2.0, "growing");
 }

@@ -91,6 +91,12 @@ SurfaceCrackResult solveSurfaceCrack(const SurfaceCrackCase& c, const Material& 
 // `rings` rings (2 by default) and radius 1.2 cm, normal x, 2 cm above the centre (offset along
 // y), grown with full-length steps (minimum speed 1) and front edges of 0.6 h.
 TriangleMesh growthSlab();
+// The embedded-growth block: 20 x 26 x 26 cm with the slab's 2 cm elements (1,716 triangles). A
+// pre-crack at its centre (offset 0) stays embedded for kEmbeddedGrowthSteps full-length steps,
+// its radius below the ligament to the surface: where EST, which treats every crack as embedded,
+// is compared with FULL, whose cracks open where they reach the surface.
+TriangleMesh embeddedGrowthBlock();
+constexpr int kEmbeddedGrowthSteps = 4;
 Material growthMaterial();
 FractureSettings growthSettings(FractureMethod method);
 void addGrowthPreCrack(CrackMesh& cracks, double offsetY = 0.03, int rings = 2);
