@@ -35,6 +35,10 @@ int CrackMesh::addTriangle(int a, int b, int c) {
     return t;
 }
 
+bool CrackMesh::isMouthEdge(int a, int b) const {
+    return onSurface(a) && onSurface(b) && !interiorChords_.count({std::min(a, b), std::max(a, b)});
+}
+
 double CrackMesh::area(int t) const {
     const auto& tri = triangles_[t];
     return 0.5 * (nodes_[tri[1]] - nodes_[tri[0]]).cross(nodes_[tri[2]] - nodes_[tri[0]]).norm();
@@ -97,6 +101,16 @@ std::vector<int> CrackMesh::refreshUnknowns(const SurfaceMesh& body) {
         }
         if (surfaceNode_[i] < 0 && surfaceEdge_[i][0] < 0) surfaceTriangle_[i] = nearest.triangle;
     }
+    // An edge between two nodes on the surface whose chord runs deeper inside than kMouthChordDepth
+    // of its length (across a thin wall, from one face to the opposite one) is no mouth edge.
+    for (const auto& tri : triangles_)
+        for (int k = 0; k < 3; ++k) {
+            const int a = std::min(tri[k], tri[(k + 1) % 3]), b = std::max(tri[k], tri[(k + 1) % 3]);
+            if (!onSurface(a) || !onSurface(b) || !chordChecked_.insert({a, b}).second) continue;
+            const double depth = body.nearest(0.5 * (nodes_[a] + nodes_[b])).distance;
+            if (depth > kMouthChordDepth * (nodes_[b] - nodes_[a]).norm() + tolerance)
+                interiorChords_.insert({a, b});
+        }
     return refreshUnknowns();
 }
 
@@ -141,8 +155,9 @@ std::vector<int> CrackMesh::refreshUnknowns() {
     // off the surface: there the front meets the surface.
     std::vector<char> frontEnd(nodes_.size(), 0);
     for (const FrontEdge& e : boundaryEdges_) {
-        if (onSurface(e.a) && !onSurface(e.b) && unknown_[e.a] < 0) frontEnd[e.a] = 1;
-        if (onSurface(e.b) && !onSurface(e.a) && unknown_[e.b] < 0) frontEnd[e.b] = 1;
+        if (isMouthEdge(e.a, e.b)) continue;
+        if (onSurface(e.a) && unknown_[e.a] < 0) frontEnd[e.a] = 1;
+        if (onSurface(e.b) && unknown_[e.b] < 0) frontEnd[e.b] = 1;
     }
     for (int i = 0; i < nodeCount(); ++i)
         if (onSurface(i) && !frontEnd[i]) onFront[i] = 0;

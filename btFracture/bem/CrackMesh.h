@@ -16,6 +16,8 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace btfracture {
@@ -50,6 +52,11 @@ public:
     // The surface edge (lower node first) whose inside the node lies on; {-1, -1}: none.
     const std::array<int, 2>& surfaceEdgeOf(int i) const { return surfaceEdge_[i]; }
     int surfaceTriangleOf(int i) const { return surfaceTriangle_[i]; }  // inside it; -1: none
+    // Whether the sheet edge a-b lies on the surface: both nodes on it and the chord between them
+    // no deeper inside than kMouthChordDepth of its length (a sheet edge across a thin wall, from
+    // one face to the other, is front). Boundary edges that are mouth edges form the mouth.
+    static constexpr double kMouthChordDepth = 0.3;
+    bool isMouthEdge(int a, int b) const;
     int unknownOf(int i) const { return unknown_[i]; }  // -1 on the front
     int unknownCount() const { return unknownCount_; }
     const std::vector<int>& nodeOfUnknown() const { return nodeOfUnknown_; }
@@ -85,6 +92,7 @@ private:
     std::vector<int> surfaceNode_;  // surface node the crack node lies on, -1 none
     std::vector<std::array<int, 2>> surfaceEdge_;
     std::vector<int> surfaceTriangle_;
+    std::set<std::pair<int, int>> chordChecked_, interiorChords_;  // (lower, higher node)
     std::vector<int> nodeOfUnknown_;
     std::vector<FrontEdge> frontEdges_, boundaryEdges_;
     std::vector<int> sheetOfTriangle_;

@@ -221,6 +221,10 @@ int CrackSystem::update() {
     // Surface-crack coupling for the new unknowns: new columns of C, new rows of G.
     const QuadratureSettings& q = solver_.settings().quadrature;
     const MouthCut cut = cutAlongMouths(solver_.mesh(), cracks_);
+    if (cut.unfollowedEdges > unfollowedEdges_)
+        logf(LogLevel::Info, "crack system: ", cut.unfollowedEdges, " crack mouth edges could not be followed over ",
+             "the body's surface; their nodes' openings lack the surface part there (FORMULATION.md, Mouth)");
+    unfollowedEdges_ = std::max(unfollowedEdges_, cut.unfollowedEdges);
     const CrackSurfaceCoupling coupling =
         assembleCoupling(solver_, cracks_, fresh, CouplingBlocks::SurfaceAndLoad, cut);
 

@@ -71,6 +71,7 @@ private:
     Eigen::MatrixXd denseSchur_;                                           // S in full, once Cholesky failed
     Eigen::PartialPivLU<Eigen::MatrixXd> lu_;                              // its LU
     int assembledUnknowns_ = 0;
+    int unfollowedEdges_ = 0;  // the most mouth edges left out of a cut so far (logged when it grows)
 };
 
 // Columns of C for the given crack unknowns and the matching rows of G, computed from scratch

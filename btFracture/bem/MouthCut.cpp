@@ -2,6 +2,7 @@
 #include <btFracture/bem/MouthCut.h>
 
 #include <btFracture/core/Error.h>
+#include <btFracture/core/Log.h>
 
 #include <Eigen/Geometry>
 
@@ -142,7 +143,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     };
     std::vector<Segment> segments;
     for (const auto& e : cracks.boundaryEdges())
-        if (cracks.onSurface(e.a) && cracks.onSurface(e.b)) segments.push_back({e.a, e.b, e.triangle});
+        if (cracks.isMouthEdge(e.a, e.b)) segments.push_back({e.a, e.b, e.triangle});
     std::set<int> boundaryOnSurface;  // crack nodes on the sheets' boundary and on the surface
     for (const auto& e : cracks.boundaryEdges())
         for (int i : {e.a, e.b})
@@ -208,6 +209,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     // surface nodes on its + side gives its hats the slope of that small gap (K_I of a shifted
     // edge crack 24 % low).
     std::map<int, MouthWeights> extension;  // surface node -> its cut hat values
+    std::map<int, double> reach;            // surface node -> its shortest edge [m]
     {
         std::set<int> candidates;
         for (int t : near)
@@ -219,6 +221,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
                     if (mesh.triangle(t)[k] == v)
                         for (int other : {mesh.triangle(t)[(k + 1) % 3], mesh.triangle(t)[(k + 2) % 3]})
                             shortest = std::min(shortest, (mesh.node(other) - mesh.node(v)).norm());
+            reach[v] = shortest;
             const NearestMouth m = nearestMouth(mesh.node(v));
             if (!(m.side > 0.0) || m.distance >= shortest) continue;
             extension[v] = m.weights;
@@ -255,21 +258,18 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     // Follow every mouth edge over the surface where its crack plane cuts it.
     int nextId = n + cracks.nodeCount();
     std::map<std::pair<int, int>, std::vector<int>> pathOf;  // (a, b) -> local vertices strictly between
-    for (const Segment& s : segments) {
+    auto follow = [&](const Segment& s, std::vector<int>& path) {
         const int target = localOfCrackNode.at(s.b);
         const Eigen::Vector3d m = cracks.normal(s.triangle), origin = cracks.node(s.a);
         const double length = (cracks.node(s.b) - origin).norm();
         const double snap = 1e-6 * length + tolerance;
-        std::vector<int>& path = pathOf[{s.a, s.b}];
         int current = localOfCrackNode.at(s.a);
         // The plane meets the surface in a curve: leave the start toward the other node, then go
         // on the way the curve goes (it may turn round a corner of the body), never back.
         Eigen::Vector3d heading = (local.vertices[target].x - local.vertices[current].x).normalized();
         std::set<int> visited{current};
         for (int guard = 0; !local.hasEdge(current, target); ++guard) {
-            if (guard > 1000 || current == target)
-                throw Error("crack mouth: cannot follow the edge from crack node " + std::to_string(s.a) +
-                            " to " + std::to_string(s.b) + " over the body's surface");
+            if (guard > 1000 || current == target) return false;
             const Eigen::Vector3d from = local.vertices[current].x;
             double bestScore = -0.5;
             int bestVertex = -1;
@@ -298,13 +298,9 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
                     consider(local.vertices[u].x + du / (du - dw) * (local.vertices[w].x - local.vertices[u].x), -1,
                              {u, w});
             }
-            if (bestScore <= -0.5)
-                throw Error("crack mouth: cannot follow the edge from crack node " + std::to_string(s.a) +
-                            " to " + std::to_string(s.b) + " over the body's surface");
-            // The region cut is closed around the path (both triangles of every edge split).
-            if (bestVertex < 0 && local.edgeUses(bestEdge[0], bestEdge[1]) != 2)
-                throw Error("crack mouth: the mouth from crack node " + std::to_string(s.a) + " to " +
-                            std::to_string(s.b) + " leaves the surface region cut for it");
+            // The region cut must stay closed around the path (both triangles of every edge split).
+            if (bestScore <= -0.5 || (bestVertex < 0 && local.edgeUses(bestEdge[0], bestEdge[1]) != 2))
+                return false;
             if (bestVertex < 0)
                 bestVertex = local.splitEdge(bestEdge[0], bestEdge[1],
                                              {bestPoint, nextId++, weightsAlong(cracks, s.a, s.b, bestPoint)});
@@ -314,6 +310,38 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
             heading = (local.vertices[bestVertex].x - from).normalized();
             visited.insert(bestVertex);
             current = bestVertex;
+        }
+        return true;
+    };
+    // A mouth edge that cannot be followed over the surface (its crack plane does not lead from one
+    // node to the other near the chord) is left out of the cut, counted; its nodes keep their
+    // openings, whose cut hats then lack that edge's part.
+    std::vector<Segment> followed;
+    for (const Segment& s : segments) {
+        const LocalMesh before = local;
+        const int idBefore = nextId;
+        std::vector<int> path;
+        if (follow(s, path)) {
+            pathOf[{s.a, s.b}] = path;
+            followed.push_back(s);
+            continue;
+        }
+        local = before;
+        nextId = idBefore;
+        ++out.unfollowedEdges;
+        logf(LogLevel::Debug, "crack mouth: the sheet edge from crack node ", s.a, " to ", s.b,
+             " could not be followed over the body's surface; it is left out of the mouth's cut");
+    }
+    if (followed.size() < segments.size()) {
+        segments = followed;  // the sides and plateau values from the followed edges only
+        for (auto it = extension.begin(); it != extension.end();) {
+            const NearestMouth m = nearestMouth(mesh.node(it->first));
+            if (m.side > 0.0 && m.distance < reach.at(it->first)) {
+                it->second = m.weights;
+                ++it;
+            } else {
+                it = extension.erase(it);
+            }
         }
     }
     // Sides: a piece carries the cut hats when its centroid lies on the crack normal's side of

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Zlib
 #pragma once
 // Surface and crack triangles cut along crack mouths (FORMULATION.md, "Mouth"). The mouth line
-// is the set of crack boundary edges whose two nodes lie on the body's surface. Each such edge is
+// is the set of crack boundary edges that lie on the body's surface (CrackMesh::isMouthEdge). Each such edge is
 // followed over the surface where its crack plane cuts it, and every surface triangle it touches
 // or crosses is split into pieces whose edges contain the line (a node inside a triangle splits
 // it in three, a crossing point splits the two triangles of an edge). Every piece corner on the
@@ -36,13 +36,14 @@ struct MouthCut {
     // Crack triangle -> its pieces, for crack triangles whose mouth edges pass through surface
     // edges or nodes (the pieces' weights then hold the crack hats of its three corners).
     std::map<int, std::vector<MouthPiece>> crackPieces;
+    int unfollowedEdges = 0;  // mouth edges left out of the cut (see cutAlongMouths)
 };
 
 // Surface ids of crack nodes: the surface node a crack node lies on, else nodeCount + crack node.
 int mouthIdOf(const SurfaceMesh& mesh, const CrackMesh& cracks, int crackNode);
 
-// Throws btfracture::Error naming the crack nodes when a mouth edge cannot be followed over the
-// surface (its crack plane does not lead from one node to the other within the body's surface).
+// A mouth edge that cannot be followed over the surface (its crack plane does not lead from one
+// node to the other near the chord) is left out of the cut, counted and logged (debug).
 MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks);
 
 }  // namespace btfracture

@@ -181,13 +181,6 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
                 stops = again.crack;
             }
         }
-        if (toSurface && !blocked) {  // a ligament thinner than the crack mesh resolves breaks
-            const SurfaceMesh::Nearest near = body.nearest(target);
-            if (near.distance < 0.25 * maxEdge && advance.direction.dot(body.normal(near.triangle)) >= 0.5) {
-                target = near.point;
-                surfaceTarget = true;
-            }
-        }
         // No room left, or the node is (a carried crack reaching past a fragment's surface) or
         // ends outside the body: outside, a front would grow on unchecked.
         if ((target - p).norm() < 0.05 * maxEdge || (!surfaceTarget && !body.encloses(target))) {

@@ -34,9 +34,7 @@ struct GrowthResult {
 enum class FoldGuard { Hold, Off };
 // Where a front that meets the surface stops. Inside: just inside it (0.9 of the way), as EST's
 // embedded-crack estimate needs. OnSurface: on it (FULL, whose sheets open there as mouths,
-// FORMULATION.md), and a node heading for the surface (within 60 degrees of its normal) that would
-// end closer to it than a quarter of the longest front edge goes all the way: a ligament thinner
-// than that is not resolved by the crack mesh.
+// FORMULATION.md).
 enum class SurfaceReach { Inside, OnSurface };
 
 // `advances[node]` holds the motion of each front node (distance 0 = stays). `arrested` (per

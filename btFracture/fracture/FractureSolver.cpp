@@ -3,6 +3,7 @@
 
 #include <btFracture/bem/InteriorStress.h>
 #include <btFracture/bem/SurfaceStress.h>
+#include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/fracture/CrackGrowth.h>
@@ -244,7 +245,20 @@ void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
         cod.segment<3>(3 * i) = opening;
     }
     if (active_ == FractureMethod::Full) {
-        full_->update();
+        try {
+            full_->update();
+        } catch (const Error& e) {
+            // With open mouths, cracks that cut the body through leave its pieces free to move
+            // against each other: no equilibrium, a singular system. Growth of this event ends.
+            logf(LogLevel::Info, "fracture: the crack system became singular as the cracks grew (", e.what(),
+                 "); they cut the body through, so every front stops");
+            const Eigen::Index oldSize = solvedOpenings_.size();
+            solvedOpenings_.conservativeResize(3 * cracks_.nodeCount());
+            solvedOpenings_.tail(solvedOpenings_.size() - oldSize).setZero();
+            arrested_.assign(cracks_.nodeCount(), 1);
+            recordLeavingOpenings(fresh, cod);
+            return;
+        }
         const CrackSystem::Solution s = full_->solve(tractions_);
         displacements_ = s.displacements;
         solvedOpenings_ = full_->nodalOpenings(s);

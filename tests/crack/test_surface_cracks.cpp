@@ -85,7 +85,7 @@ TEST(SurfaceCrack, MouthOpensInsideSurfaceTriangles) {
 // FULL grows the a/b = 0.2 edge crack five steps under the same tension (tiny toughness,
 // full-length steps): the front's ends meet the plate's faces and become mouth there, so K_I at
 // mid-thickness follows Tada's value for the grown depth within 5 % at every step (measured
-// +0.3, +2.0, -3.4, -3.1, -2.7, -2.6 %; with the ends held just inside the faces it fell to
+// +0.3, +2.0, -3.4, -3.1, -3.4, -2.8 %; with the ends held just inside the faces it fell to
 // -8.2 %), and the mouth grows along the faces.
 TEST(SurfaceCrack, GrownFrontEndsOpenOnTheFaces) {
     const SurfaceCrackCase c = edgeCrackCase(0.2, 4);
