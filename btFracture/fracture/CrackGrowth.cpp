@@ -17,19 +17,21 @@ struct Obstacle {
 };
 
 // Where the segment p -> q first leaves the body or meets a crack triangle not touching `node`.
-// From a point on the surface (`fromSurface`), the surface it starts on is not an obstacle unless
-// the segment leaves the body there.
+// From a point on the surface the surface is an obstacle only where the segment leaves the body
+// there (SurfaceStart::Leaves), or not at all (SurfaceStart::Slides: a slide along it, which is
+// put back onto the surface afterwards).
+enum class SurfaceStart { Inside, Leaves, Slides };
 Obstacle firstObstacle(const CrackMesh& cracks, int node, const Eigen::Vector3d& p, const Eigen::Vector3d& q,
-                       const SurfaceMesh& body, bool fromSurface = false) {
+                       const SurfaceMesh& body, SurfaceStart start = SurfaceStart::Inside) {
     Obstacle o;
-    if (fromSurface) {
-        const SurfaceMesh::Nearest start = body.nearest(p);
-        if (body.normal(start.triangle).dot(q - p) > 0.0) return {0.0, false, start.triangle};
+    if (start == SurfaceStart::Leaves) {
+        const SurfaceMesh::Nearest near = body.nearest(p);
+        if (body.normal(near.triangle).dot(q - p) > 0.0) return {0.0, false, near.triangle};
     }
-    for (int s = 0; s < body.triangleCount(); ++s) {
+    for (int s = 0; s < body.triangleCount() && start != SurfaceStart::Slides; ++s) {
         const auto& tri = body.triangle(s);
         const double hit = segmentTriangleHit(p, q, body.node(tri[0]), body.node(tri[1]), body.node(tri[2]));
-        if (hit >= (fromSurface ? 1e-6 : 0.0) && hit < o.t) o = {hit, false, s};
+        if (hit >= (start == SurfaceStart::Leaves ? 1e-6 : 0.0) && hit < o.t) o = {hit, false, s};
     }
     for (int c = 0; c < cracks.triangleCount(); ++c) {
         const auto& tri = cracks.triangle(c);
@@ -164,7 +166,8 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
         const Eigen::Vector3d p = cracks.node(node);
         const Eigen::Vector3d step = advance.distance * advance.direction;
         const bool fromSurface = toSurface && onSurface[node];
-        const Obstacle o = firstObstacle(cracks, node, p, p + step, body, fromSurface);
+        const Obstacle o = firstObstacle(cracks, node, p, p + step, body,
+                                         fromSurface ? SurfaceStart::Leaves : SurfaceStart::Inside);
         const bool blocked = o.t < 1.0;
         Eigen::Vector3d target = p + (blocked ? (o.crack ? 0.9 : reachFraction) * o.t : 1.0) * step;
         bool stops = blocked;
@@ -175,7 +178,8 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
             const Eigen::Vector3d move =
                 (1.0 - reachFraction * o.t) * advance.distance * slide.along * slide.line;
             if (slide.slides && move.norm() >= 0.05 * maxEdge) {
-                const Obstacle again = firstObstacle(cracks, node, target, target + move, body, toSurface);
+                const Obstacle again = firstObstacle(cracks, node, target, target + move, body,
+                                                     toSurface ? SurfaceStart::Slides : SurfaceStart::Inside);
                 target += (again.t < 1.0 ? (again.crack ? 0.9 : reachFraction) * again.t : 1.0) * move;
                 if (toSurface) target = body.nearest(target).point;  // a curved face
                 stops = again.crack;
