@@ -47,7 +47,9 @@ public:
     bool isFront(int i) const { return unknown_[i] < 0; }
     // On the surface and carrying an opening (not where the front meets the surface).
     bool isMouth(int i) const { return onSurface(i) && unknown_[i] >= 0; }
-    bool onSurface(int i) const { return surfaceNode_[i] >= 0 || surfaceEdge_[i][0] >= 0 || surfaceTriangle_[i] >= 0; }
+    bool onSurface(int i) const {
+        return surfaceNode_[i] >= 0 || surfaceEdge_[i][0] >= 0 || surfaceTriangle_[i] >= 0;
+    }
     int surfaceNodeOf(int i) const { return surfaceNode_[i]; }  // -1: none (or not matched yet)
     // The surface edge (lower node first) whose inside the node lies on; {-1, -1}: none.
     const std::array<int, 2>& surfaceEdgeOf(int i) const { return surfaceEdge_[i]; }

@@ -176,7 +176,8 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
                     // only where a cut surface hat lies on sigma itself).
                     if (withLoad) {
                         const double sum = f.values[0] + f.values[1] + f.values[2];
-                        const double mass = crack.surfaceTriangle == sigma ? crack.panel.panel.area * sum / 6.0 : 0.0;
+                        const double mass =
+                            crack.surfaceTriangle == sigma ? crack.panel.panel.area * sum / 6.0 : 0.0;
                         double doubleLayer = 0.0;
                         for (int b = 0; b < 3; ++b) doubleLayer += f.values[b] * pi.doubleLayerXY[b];
                         addLoadBlock(d.data(), coeff, mu, mass - doubleLayer,
@@ -222,7 +223,8 @@ int CrackSystem::update() {
     const QuadratureSettings& q = solver_.settings().quadrature;
     const MouthCut cut = cutAlongMouths(solver_.mesh(), cracks_);
     if (cut.unfollowedEdges > unfollowedEdges_)
-        logf(LogLevel::Info, "crack system: ", cut.unfollowedEdges, " crack mouth edges could not be followed over ",
+        logf(LogLevel::Info, "crack system: ", cut.unfollowedEdges,
+             " crack mouth edges could not be followed over ",
              "the body's surface; their nodes' openings lack the surface part there (FORMULATION.md, Mouth)");
     unfollowedEdges_ = std::max(unfollowedEdges_, cut.unfollowedEdges);
     const CrackSurfaceCoupling coupling =

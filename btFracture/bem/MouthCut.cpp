@@ -124,7 +124,8 @@ Panel panelOfCorners(const LocalMesh& local, const std::array<int, 3>& c, const 
     return p;
 }
 
-Eigen::Vector3d closestOnSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+Eigen::Vector3d closestOnSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                 const Eigen::Vector3d& b) {
     const Eigen::Vector3d ab = b - a;
     return a + std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) * ab;
 }
@@ -165,7 +166,8 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         for (const Segment& s : segments) {
             const Eigen::Vector3d c = closestOnSegment(x, cracks.node(s.a), cracks.node(s.b));
             const double d = (x - c).norm();
-            if (d < best.distance) best = {d, (x - c).dot(cracks.normal(s.triangle)), weightsAlong(cracks, s.a, s.b, c)};
+            if (d < best.distance)
+                best = {d, (x - c).dot(cracks.normal(s.triangle)), weightsAlong(cracks, s.a, s.b, c)};
         }
         for (int i : surfaceNodes) {
             const double d = (x - cracks.node(i)).norm();
@@ -251,7 +253,8 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     for (int i : surfaceNodes) {
         const int v = local.insert({cracks.node(i), mouthIdOf(mesh, cracks, i), {{i, 1.0}}}, tolerance);
         if (v < 0)
-            throw Error("crack mouth: crack node " + std::to_string(i) + " lies on the surface but not near it");
+            throw Error("crack mouth: crack node " + std::to_string(i) +
+                        " lies on the surface but not near it");
         local.vertices[v].weights = {{i, 1.0}};
         localOfCrackNode[i] = v;
     }
@@ -280,7 +283,8 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
                 const int j = static_cast<int>(std::find(c.begin(), c.end(), current) - c.begin());
                 if (j == 3) continue;
                 const int u = c[(j + 1) % 3], w = c[(j + 2) % 3];
-                const double du = m.dot(local.vertices[u].x - origin), dw = m.dot(local.vertices[w].x - origin);
+                const double du = m.dot(local.vertices[u].x - origin),
+                             dw = m.dot(local.vertices[w].x - origin);
                 auto consider = [&](const Eigen::Vector3d& x, int vertex, std::array<int, 2> edge) {
                     const Eigen::Vector3d d = x - from;
                     if (d.norm() <= tolerance || (vertex >= 0 && visited.count(vertex))) return;
@@ -295,17 +299,20 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
                 if (std::abs(du) <= snap) consider(local.vertices[u].x, u, {-1, -1});
                 if (std::abs(dw) <= snap) consider(local.vertices[w].x, w, {-1, -1});
                 if ((du > snap && dw < -snap) || (du < -snap && dw > snap))
-                    consider(local.vertices[u].x + du / (du - dw) * (local.vertices[w].x - local.vertices[u].x), -1,
-                             {u, w});
+                    consider(
+                        local.vertices[u].x + du / (du - dw) * (local.vertices[w].x - local.vertices[u].x),
+                        -1, {u, w});
             }
             // The region cut must stay closed around the path (both triangles of every edge split).
             if (bestScore <= -0.5 || (bestVertex < 0 && local.edgeUses(bestEdge[0], bestEdge[1]) != 2))
                 return false;
             if (bestVertex < 0)
-                bestVertex = local.splitEdge(bestEdge[0], bestEdge[1],
-                                             {bestPoint, nextId++, weightsAlong(cracks, s.a, s.b, bestPoint)});
+                bestVertex =
+                    local.splitEdge(bestEdge[0], bestEdge[1],
+                                    {bestPoint, nextId++, weightsAlong(cracks, s.a, s.b, bestPoint)});
             else if (local.vertices[bestVertex].weights.empty())
-                local.vertices[bestVertex].weights = weightsAlong(cracks, s.a, s.b, local.vertices[bestVertex].x);
+                local.vertices[bestVertex].weights =
+                    weightsAlong(cracks, s.a, s.b, local.vertices[bestVertex].x);
             if (bestVertex != target) path.push_back(bestVertex);
             heading = (local.vertices[bestVertex].x - from).normalized();
             visited.insert(bestVertex);
@@ -365,12 +372,14 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     std::vector<char> plus(local.triangles.size(), 0);
     for (std::size_t i = 0; i < local.triangles.size(); ++i) {
         const auto& c = local.triangles[i].corners;
-        const Eigen::Vector3d centroid = (local.vertices[c[0]].x + local.vertices[c[1]].x + local.vertices[c[2]].x) / 3.0;
+        const Eigen::Vector3d centroid =
+            (local.vertices[c[0]].x + local.vertices[c[1]].x + local.vertices[c[2]].x) / 3.0;
         double side = nearestMouth(centroid).side;
         for (int k = 0; k < 3; ++k) {
             const auto it = mouthEdge.find({std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])});
             if (it == mouthEdge.end()) continue;
-            const Eigen::Vector3d on = closestOnSegment(centroid, local.vertices[c[k]].x, local.vertices[c[(k + 1) % 3]].x);
+            const Eigen::Vector3d on =
+                closestOnSegment(centroid, local.vertices[c[k]].x, local.vertices[c[(k + 1) % 3]].x);
             side = (centroid - on).dot(cracks.normal(it->second));
             break;
         }
@@ -419,7 +428,8 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         if (split.triangles.empty()) {
             for (int k = 0; k < 3; ++k) {
                 const int node = cracks.triangle(s.triangle)[k];
-                corner[k] = split.addVertex({cracks.node(node), mouthIdOf(mesh, cracks, node), {{node, 1.0}}});
+                corner[k] =
+                    split.addVertex({cracks.node(node), mouthIdOf(mesh, cracks, node), {{node, 1.0}}});
             }
             split.triangles.push_back({corner, s.triangle});
         }

@@ -137,8 +137,8 @@ int addFrontTriangle(CrackMesh& cracks, int apex, int from, int to, double maxEd
 }  // namespace
 
 GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& advances,
-                        const SurfaceMesh& body, double maxEdge, std::vector<char>& arrested,
-                        FoldGuard guard, SurfaceReach reach) {
+                        const SurfaceMesh& body, double maxEdge, std::vector<char>& arrested, FoldGuard guard,
+                        SurfaceReach reach) {
     GrowthResult result;
     arrested.resize(cracks.nodeCount(), 0);
     // Front neighbours of every front node (previous -> node -> next along the front edges).
@@ -218,9 +218,11 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
             result.newTriangles +=
                 1 + addFrontTriangle(cracks, e.b, ia->second, ib->second, maxEdge, body, arrested, onSurface);
         } else if (movesA) {  // new front a' -> b
-            result.newTriangles += addFrontTriangle(cracks, e.a, ia->second, e.b, maxEdge, body, arrested, onSurface);
+            result.newTriangles +=
+                addFrontTriangle(cracks, e.a, ia->second, e.b, maxEdge, body, arrested, onSurface);
         } else if (movesB) {  // new front a -> b'
-            result.newTriangles += addFrontTriangle(cracks, e.b, e.a, ib->second, maxEdge, body, arrested, onSurface);
+            result.newTriangles +=
+                addFrontTriangle(cracks, e.b, e.a, ib->second, maxEdge, body, arrested, onSurface);
         }
     }
     return result;

@@ -171,8 +171,9 @@ FractureStepRecord FractureSolver::step(int index) {
     record.stressBoundedNodes = active_ == FractureMethod::Estimated ? stressBounded_ : 0;
     if (record.stressBoundedNodes > 0)
         logf(LogLevel::Info, "fracture: step ", index, ": the local stress at ", record.stressBoundedNodes,
-             " of ", record.frontNodes, " fronts exceeded ", kMaxGeometryFactor / settings_.estimatorGeometryFactor,
-             " times the crack-free surface peak ", peakStress_, " Pa (K <= ", kMaxGeometryFactor,
+             " of ", record.frontNodes, " fronts exceeded ",
+             kMaxGeometryFactor / settings_.estimatorGeometryFactor, " times the crack-free surface peak ",
+             peakStress_, " Pa (K <= ", kMaxGeometryFactor,
              " sigma_peak sqrt(pi a)); EST used that bound there");
     if (record.gainLimitedNodes > 0)
         logf(LogLevel::Info, "fracture: step ", index, ": estimatorUpdateGainLimit ",
@@ -205,9 +206,9 @@ FractureStepRecord FractureSolver::step(int index) {
         }
     }
     const bool full = active_ == FractureMethod::Full;
-    const GrowthResult growth =
-        growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * elementSize_, arrested_,
-                   full ? FoldGuard::Hold : FoldGuard::Off, full ? SurfaceReach::OnSurface : SurfaceReach::Inside);
+    const GrowthResult growth = growFronts(
+        cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * elementSize_, arrested_,
+        full ? FoldGuard::Hold : FoldGuard::Off, full ? SurfaceReach::OnSurface : SurfaceReach::Inside);
     int stopped = 0;
     for (const int node : stopAfter) {
         const auto moved = growth.newNode.find(node);

@@ -136,7 +136,8 @@ TEST(SifEstimator, EstimatesStayWithinWhatTheLoadCanProduce) {
     // A local stress 100 times the surface peak (as the interior integral gives right at the
     // surface) is scaled to 6 / k times the peak, keeping its directions: K_eff then stays
     // within 6 sigma_peak sqrt(pi a) (a = sqrt(A / pi)); a stress below the bound is untouched.
-    FrontFrame frame{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX().cross(Eigen::Vector3d::UnitZ())};
+    FrontFrame frame{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(),
+                     Eigen::Vector3d::UnitX().cross(Eigen::Vector3d::UnitZ())};
     Eigen::Matrix3d surface = Eigen::Matrix3d::Zero();
     surface(2, 2) = 2e6;
     surface(0, 1) = surface(1, 0) = -1e6;
@@ -435,7 +436,8 @@ TEST(CrackGrowth, AFrontEdgeSplitAcrossAHoleKeepsItsMidpointInside) {
         return Eigen::Vector3d(0.1 * std::cos(a), 0.1 * std::sin(a), 0.0);
     };
     CrackMesh cracks;
-    const int c1 = cracks.addNode(Eigen::Vector3d(0.11, -0.07, 0.0)), c2 = cracks.addNode(Eigen::Vector3d(0.11, 0.07, 0.0));
+    const int c1 = cracks.addNode(Eigen::Vector3d(0.11, -0.07, 0.0)),
+              c2 = cracks.addNode(Eigen::Vector3d(0.11, 0.07, 0.0));
     const int a = cracks.addNode(onCircle(-30.0)), b = cracks.addNode(onCircle(30.0));
     cracks.addTriangle(c1, b, a);
     cracks.addTriangle(c1, c2, b);
@@ -474,8 +476,10 @@ TEST(CrackGrowth, AStepBehindTheFrontEdgeIsHeldNotFolded) {
     const SurfaceMesh cube(makeBox(Eigen::Vector3d(0.5, 0.5, 0.5), 4.0));
     for (const bool backwards : {true, false}) {
         CrackMesh cracks;
-        const int a = cracks.addNode(Eigen::Vector3d(0.0, 0.0, 0.0)), b = cracks.addNode(Eigen::Vector3d(0.1, 0.0, 0.0));
-        const int c = cracks.addNode(Eigen::Vector3d(0.1, 0.1, 0.0)), d = cracks.addNode(Eigen::Vector3d(0.0, 0.1, 0.0));
+        const int a = cracks.addNode(Eigen::Vector3d(0.0, 0.0, 0.0)),
+                  b = cracks.addNode(Eigen::Vector3d(0.1, 0.0, 0.0));
+        const int c = cracks.addNode(Eigen::Vector3d(0.1, 0.1, 0.0)),
+                  d = cracks.addNode(Eigen::Vector3d(0.0, 0.1, 0.0));
         cracks.addTriangle(a, b, c);
         cracks.addTriangle(a, c, d);
         cracks.refreshUnknowns();

@@ -108,7 +108,8 @@ TEST(SurfaceCrack, GrownFrontEndsOpenOnTheFaces) {
         const FrontSifs& f = midThicknessSifs(fracture.frontSifs(), c, solver.mesh());
         const double depth = (f.position + solver.mesh().offset() - c.origin).dot(c.U);
         const double exact = kEdgeCrackTension * edgeCrackFactor(depth, kEdgeCrackPlateWidth);
-        std::printf("grown edge crack, step %d: depth %.4f m, K_I FULL / Tada %.4f\n", step, depth, f.KI / exact);
+        std::printf("grown edge crack, step %d: depth %.4f m, K_I FULL / Tada %.4f\n", step, depth,
+                    f.KI / exact);
         EXPECT_NEAR(f.KI / exact, 1.0, 0.05) << "step " << step;
         deepest = depth;
         if (step < 5) {
