@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Zlib
 #include <btFracture/bem/MouthCut.h>
 
+#include <btFracture/core/ClosestPoint.h>
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 
@@ -86,24 +87,15 @@ public:
         if (best < 0) return -1;
         const auto& c = triangles[best].corners;
         for (int j = 0; j < 3; ++j) {
-            const Eigen::Vector3d a = vertices[c[j]].x, ab = vertices[c[(j + 1) % 3]].x - a;
-            const double t = std::clamp((v.x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-            if ((a + t * ab - v.x).norm() <= tolerance) return splitEdge(c[j], c[(j + 1) % 3], std::move(v));
+            const Eigen::Vector3d on =
+                closestPointOnSegment(v.x, vertices[c[j]].x, vertices[c[(j + 1) % 3]].x);
+            if ((on - v.x).norm() <= tolerance) return splitEdge(c[j], c[(j + 1) % 3], std::move(v));
         }
         return splitTriangle(best, std::move(v));
     }
     double distanceTo(int i, const Eigen::Vector3d& p) const {
         const auto& c = triangles[i].corners;
-        const Eigen::Vector3d a = vertices[c[0]].x, b = vertices[c[1]].x, d = vertices[c[2]].x;
-        const Eigen::Vector3d n = (b - a).cross(d - a).normalized();
-        const double height = std::abs((p - a).dot(n));
-        double outside = 0.0;  // how far the projection lies outside the triangle
-        const std::array<Eigen::Vector3d, 3> x{a, b, d};
-        for (int j = 0; j < 3; ++j) {
-            const Eigen::Vector3d e = x[(j + 1) % 3] - x[j];
-            outside = std::max(outside, -(p - x[j]).dot(n.cross(e).normalized()));
-        }
-        return std::hypot(height, outside);
+        return (p - closestPointOnTriangle(p, vertices[c[0]].x, vertices[c[1]].x, vertices[c[2]].x)).norm();
     }
 };
 
@@ -122,12 +114,6 @@ Panel panelOfCorners(const LocalMesh& local, const std::array<int, 3>& c, const 
     p.area = 0.5 * n.norm();
     p.normal = n.dot(side) >= 0.0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d(-n.normalized());
     return p;
-}
-
-Eigen::Vector3d closestOnSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                                 const Eigen::Vector3d& b) {
-    const Eigen::Vector3d ab = b - a;
-    return a + std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) * ab;
 }
 
 }  // namespace
@@ -164,7 +150,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     auto nearestMouth = [&](const Eigen::Vector3d& x) {
         NearestMouth best;
         for (const Segment& s : segments) {
-            const Eigen::Vector3d c = closestOnSegment(x, cracks.node(s.a), cracks.node(s.b));
+            const Eigen::Vector3d c = closestPointOnSegment(x, cracks.node(s.a), cracks.node(s.b));
             const double d = (x - c).norm();
             if (d < best.distance)
                 best = {d, (x - c).dot(cracks.normal(s.triangle)), weightsAlong(cracks, s.a, s.b, c)};
@@ -379,7 +365,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
             const auto it = mouthEdge.find({std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])});
             if (it == mouthEdge.end()) continue;
             const Eigen::Vector3d on =
-                closestOnSegment(centroid, local.vertices[c[k]].x, local.vertices[c[(k + 1) % 3]].x);
+                closestPointOnSegment(centroid, local.vertices[c[k]].x, local.vertices[c[(k + 1) % 3]].x);
             side = (centroid - on).dot(cracks.normal(it->second));
             break;
         }

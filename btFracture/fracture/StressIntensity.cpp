@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Zlib
 #include <btFracture/fracture/StressIntensity.h>
 
+#include <btFracture/core/ClosestPoint.h>
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -22,9 +24,7 @@ constexpr double kNearRow = 1.5, kFarRow = 4.5, kAlong = 2.5, kCurvedReach = 0.7
                  kResolvedRows = 2.5;
 
 double segmentDistance(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    const Eigen::Vector3d ab = b - a;
-    const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-    return (x - a - t * ab).norm();
+    return (x - closestPointOnSegment(x, a, b)).norm();
 }
 
 // Frames and spacings per front node, averaged over its front edges; `edgesAtNode` lists the
