@@ -129,6 +129,9 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
     CrackSurfaceCoupling out{Eigen::MatrixXd::Zero(3 * n, 3 * unknowns.size()),
                              Eigen::MatrixXd::Zero(withLoad ? 3 * unknowns.size() : 0, withLoad ? 3 * m : 0)};
     const std::vector<BasisElement> support = basisElements(mesh, cracks, unknowns, cut, q);
+    std::vector<std::vector<int>> columns(support.size());  // per element, per function: column of C
+    for (std::size_t e = 0; e < support.size(); ++e)
+        for (const Restriction& f : support[e].functions) columns[e].push_back(3 * column.at(f.unknown));
     // Each element writes only its own unknowns' columns of C and rows of G, but two elements
     // share unknowns: loop over surface triangles in parallel instead, each writing its own
     // nodes' rows of C (coloured) and its own columns of G.
@@ -162,8 +165,9 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
                     }
                 }
                 const PairCoefficients coeff = coefficientsOf(pi, mu, nu);
-                for (const Restriction& f : crack.functions) {
-                    const int col = 3 * column.at(f.unknown);
+                for (std::size_t i = 0; i < crack.functions.size(); ++i) {
+                    const Restriction& f = crack.functions[i];
+                    const int col = columns[e][i];
                     const Eigen::Vector3d& d = f.curl;
                     double P[9];
                     symTimesCross(coeff.L, d.data(), P);

@@ -62,10 +62,12 @@ bool keepsSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::
     return (b - a).cross(c - a).normalized().dot(n) > -0.5;
 }
 
-// Where a moving front node goes, and whether it stops there for good.
+// Where a moving front node goes, whether it stops there for good and whether that is on the
+// surface.
 struct Target {
     Eigen::Vector3d position;
     bool stops;
+    bool onSurface;
 };
 
 // Drops from `targets` (old front node -> its move) the moves whose strip triangles would fold
@@ -160,7 +162,6 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
     std::vector<char> onSurface(cracks.nodeCount(), 0);
     for (int i = 0; i < cracks.nodeCount(); ++i) onSurface[i] = cracks.onSurface(i);
     std::map<int, Target> targets;  // old front node -> where it moves
-    std::map<int, char> targetOnSurface;
     for (const auto& [node, advance] : advances) {
         if (advance.distance <= 0.0 || arrested[node]) continue;
         const Eigen::Vector3d p = cracks.node(node);
@@ -192,15 +193,14 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
             ++result.arrestedNodes;
             continue;
         }
-        targets[node] = {target, stops};
-        targetOnSurface[node] = surfaceTarget;
+        targets[node] = {target, stops, surfaceTarget};
     }
     if (guard == FoldGuard::Hold) result.heldNodes = holdFoldingNodes(cracks, targets);
     std::map<int, int> moved;  // old front node -> new node
     for (const auto& [node, target] : targets) {
         const int fresh = cracks.addNode(target.position);
         arrested.push_back(target.stops ? 1 : 0);
-        onSurface.push_back(targetOnSurface[node]);
+        onSurface.push_back(target.onSurface);
         if (target.stops) ++result.arrestedNodes;
         moved[node] = fresh;
         result.advanced[node] = (target.position - cracks.node(node)).norm();

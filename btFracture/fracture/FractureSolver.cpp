@@ -251,8 +251,8 @@ void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
         } catch (const Error& e) {
             // With open mouths, cracks that cut the body through leave its pieces free to move
             // against each other: no equilibrium, a singular system. Growth of this event ends.
-            logf(LogLevel::Info, "fracture: the crack system became singular as the cracks grew (", e.what(),
-                 "); they cut the body through, so every front stops");
+            logf(LogLevel::Info, "fracture: the crack system could not take the grown cracks (", e.what(),
+                 "); every front stops (cracks that cut a body through make it singular)");
             const Eigen::Index oldSize = solvedOpenings_.size();
             solvedOpenings_.conservativeResize(3 * cracks_.nodeCount());
             solvedOpenings_.tail(solvedOpenings_.size() - oldSize).setZero();
