@@ -36,7 +36,7 @@ int CrackMesh::addTriangle(int a, int b, int c) {
 }
 
 bool CrackMesh::isMouthEdge(int a, int b) const {
-    return onSurface(a) && onSurface(b) && !interiorChords_.count({std::min(a, b), std::max(a, b)});
+    return onSurface(a) && onSurface(b) && !frontChords_.count({std::min(a, b), std::max(a, b)});
 }
 
 double CrackMesh::area(int t) const {
@@ -109,8 +109,16 @@ std::vector<int> CrackMesh::refreshUnknowns(const SurfaceMesh& body) {
             if (!onSurface(a) || !onSurface(b) || !chordChecked_.insert({a, b}).second) continue;
             const double depth = body.nearest(0.5 * (nodes_[a] + nodes_[b])).distance;
             if (depth > kMouthChordDepth * (nodes_[b] - nodes_[a]).norm() + tolerance)
-                interiorChords_.insert({a, b});
+                frontChords_.insert({a, b});
         }
+    return refreshUnknowns();
+}
+
+std::vector<int> CrackMesh::holdAsFront(const std::vector<std::pair<int, int>>& edges, int kept) {
+    for (const auto& [a, b] : edges) frontChords_.insert({std::min(a, b), std::max(a, b)});
+    for (int k = kept; k < unknownCount_; ++k) unknown_[nodeOfUnknown_[k]] = -1;
+    nodeOfUnknown_.resize(kept);
+    unknownCount_ = kept;
     return refreshUnknowns();
 }
 

@@ -35,6 +35,10 @@ public:
     // the inside of the surface edge or the inside of the surface triangle of `body` they lie on
     // (within 1e-9 of its radius).
     std::vector<int> refreshUnknowns(const SurfaceMesh& body);
+    // Makes the sheet edges a-b front from now on (no mouth edges: their mouth could not be cut,
+    // MouthCut), withdraws the unknowns numbered from `kept` on and renumbers (nodes with earlier
+    // unknowns keep them). Returns the nodes numbered anew.
+    std::vector<int> holdAsFront(const std::vector<std::pair<int, int>>& edges, int kept);
 
     int nodeCount() const { return static_cast<int>(nodes_.size()); }
     int triangleCount() const { return static_cast<int>(triangles_.size()); }
@@ -94,7 +98,9 @@ private:
     std::vector<int> surfaceNode_;  // surface node the crack node lies on, -1 none
     std::vector<std::array<int, 2>> surfaceEdge_;
     std::vector<int> surfaceTriangle_;
-    std::set<std::pair<int, int>> chordChecked_, interiorChords_;  // (lower, higher node)
+    // (lower, higher node); front chords: sheet edges between surface nodes that are no mouth
+    // edges (across a thin wall, or held by holdAsFront)
+    std::set<std::pair<int, int>> chordChecked_, frontChords_;
     std::vector<int> nodeOfUnknown_;
     std::vector<FrontEdge> frontEdges_, boundaryEdges_;
     std::vector<int> sheetOfTriangle_;

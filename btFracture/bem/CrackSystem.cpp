@@ -217,6 +217,30 @@ const Eigen::MatrixXd& CrackSystem::crackCrackBlock() const {
 
 int CrackSystem::update() {
     cracks_.refreshUnknowns(solver_.mesh());
+    if (cracks_.unknownCount() == assembledUnknowns_) return 0;
+    // A mouth edge the cut could not follow would leave its nodes' cut hats jumping across surface
+    // edges (not conforming: S loses positive definiteness). Its nodes new to the system are held
+    // at zero instead, the edge front from now on; nodes assembled earlier keep their unknowns.
+    MouthCut cut;
+    while (true) {
+        cut = cutAlongMouths(solver_.mesh(), cracks_);
+        std::vector<std::pair<int, int>> hold;
+        for (const auto& [a, b] : cut.unfollowedEdges)
+            if (cracks_.unknownOf(a) >= assembledUnknowns_ || cracks_.unknownOf(b) >= assembledUnknowns_)
+                hold.emplace_back(a, b);
+        if (hold.empty()) break;
+        logf(LogLevel::Debug, "crack system: ", hold.size(),
+             " crack mouth edges could not be followed over the body's surface; their new nodes are held "
+             "shut");
+        cracks_.holdAsFront(hold, assembledUnknowns_);
+    }
+    const int unfollowed = static_cast<int>(cut.unfollowedEdges.size());
+    if (unfollowed > unfollowedEdges_)
+        logf(LogLevel::Info, "crack system: ", unfollowed,
+             " crack mouth edges of earlier openings could not be followed ",
+             "over the body's surface; their nodes' openings lack the surface part there (FORMULATION.md, "
+             "Mouth)");
+    unfollowedEdges_ = std::max(unfollowedEdges_, unfollowed);
     const int total = cracks_.unknownCount();
     if (total == assembledUnknowns_) return 0;
     std::vector<int> fresh(total - assembledUnknowns_);
@@ -225,12 +249,6 @@ int CrackSystem::update() {
 
     // Surface-crack coupling for the new unknowns: new columns of C, new rows of G.
     const QuadratureSettings& q = solver_.settings().quadrature;
-    const MouthCut cut = cutAlongMouths(solver_.mesh(), cracks_);
-    if (cut.unfollowedEdges > unfollowedEdges_)
-        logf(LogLevel::Info, "crack system: ", cut.unfollowedEdges,
-             " crack mouth edges could not be followed over ",
-             "the body's surface; their nodes' openings lack the surface part there (FORMULATION.md, Mouth)");
-    unfollowedEdges_ = std::max(unfollowedEdges_, cut.unfollowedEdges);
     const CrackSurfaceCoupling coupling =
         assembleCoupling(solver_, cracks_, fresh, CouplingBlocks::SurfaceAndLoad, cut);
 

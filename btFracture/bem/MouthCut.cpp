@@ -32,6 +32,7 @@ public:
     };
     std::vector<Vertex> vertices;
     std::vector<Triangle> triangles;
+    std::map<std::pair<int, int>, int> splits;  // edge (lower, higher vertex) -> vertex it was split at
 
     int addVertex(Vertex v) {
         vertices.push_back(std::move(v));
@@ -40,6 +41,7 @@ public:
     // Splits every triangle with edge a-b at the new vertex.
     int splitEdge(int a, int b, Vertex v) {
         const int k = addVertex(std::move(v));
+        splits[{std::min(a, b), std::max(a, b)}] = k;
         const std::size_t count = triangles.size();
         for (std::size_t i = 0; i < count; ++i) {
             const auto c = triangles[i].corners;
@@ -93,6 +95,17 @@ public:
         }
         return splitTriangle(best, std::move(v));
     }
+    // Appends the vertices from a (excluded) to b (included) along the edge a-b as it was before
+    // later splits.
+    void appendEdge(int a, int b, std::vector<int>& out) const {
+        const auto it = splits.find({std::min(a, b), std::max(a, b)});
+        if (it == splits.end()) {
+            out.push_back(b);
+            return;
+        }
+        appendEdge(a, it->second, out);
+        appendEdge(it->second, b, out);
+    }
     double distanceTo(int i, const Eigen::Vector3d& p) const {
         const auto& c = triangles[i].corners;
         return (p - closestPointOnTriangle(p, vertices[c[0]].x, vertices[c[1]].x, vertices[c[2]].x)).norm();
@@ -126,11 +139,13 @@ int mouthIdOf(const SurfaceMesh& mesh, const CrackMesh& cracks, int crackNode) {
 MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     MouthCut out;
     struct Segment {
-        int a, b, triangle;
+        int a, b, triangle, sheet;
     };
+    auto sheetOfNode = [&](int i) { return cracks.sheetOf(cracks.trianglesAtNode(i).front()); };
     std::vector<Segment> segments;
     for (const auto& e : cracks.boundaryEdges())
-        if (cracks.isMouthEdge(e.a, e.b)) segments.push_back({e.a, e.b, e.triangle});
+        if (cracks.isMouthEdge(e.a, e.b))
+            segments.push_back({e.a, e.b, e.triangle, cracks.sheetOf(e.triangle)});
     std::set<int> boundaryOnSurface;  // crack nodes on the sheets' boundary and on the surface
     for (const auto& e : cracks.boundaryEdges())
         for (int i : {e.a, e.b})
@@ -140,22 +155,25 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
 
     const int n = mesh.nodeCount();
     const double tolerance = 1e-9 * mesh.radius();
-    // The nearest point of the mouth line (or of a crack node on the surface) to x: its distance,
-    // the side of x (along the crack normal there) and the crack hats' trace there.
+    // The nearest point of the mouth line (or of a crack node on the surface) to x, of one sheet
+    // or (-1) of any: its distance, the side of x (along the crack normal there) and the crack
+    // hats' trace there.
     struct NearestMouth {
         double distance = std::numeric_limits<double>::infinity();
         double side = 0.0;
         MouthWeights weights;
     };
-    auto nearestMouth = [&](const Eigen::Vector3d& x) {
+    auto nearestMouth = [&](const Eigen::Vector3d& x, int sheet = -1) {
         NearestMouth best;
         for (const Segment& s : segments) {
+            if (sheet >= 0 && s.sheet != sheet) continue;
             const Eigen::Vector3d c = closestPointOnSegment(x, cracks.node(s.a), cracks.node(s.b));
             const double d = (x - c).norm();
             if (d < best.distance)
                 best = {d, (x - c).dot(cracks.normal(s.triangle)), weightsAlong(cracks, s.a, s.b, c)};
         }
         for (int i : surfaceNodes) {
+            if (sheet >= 0 && sheetOfNode(i) != sheet) continue;
             const double d = (x - cracks.node(i)).norm();
             if (d < best.distance) {
                 Eigen::Vector3d normal = Eigen::Vector3d::Zero();
@@ -247,9 +265,9 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     // Follow every mouth edge over the surface where its crack plane cuts it.
     int nextId = n + cracks.nodeCount();
     std::map<std::pair<int, int>, std::vector<int>> pathOf;  // (a, b) -> local vertices strictly between
-    auto follow = [&](const Segment& s, std::vector<int>& path) {
+    auto follow = [&](const Segment& s, const Eigen::Vector3d& m, std::vector<int>& path) {
         const int target = localOfCrackNode.at(s.b);
-        const Eigen::Vector3d m = cracks.normal(s.triangle), origin = cracks.node(s.a);
+        const Eigen::Vector3d origin = cracks.node(s.a);
         const double length = (cracks.node(s.b) - origin).norm();
         const double snap = 1e-6 * length + tolerance;
         int current = localOfCrackNode.at(s.a);
@@ -257,8 +275,16 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         // on the way the curve goes (it may turn round a corner of the body), never back.
         Eigen::Vector3d heading = (local.vertices[target].x - local.vertices[current].x).normalized();
         std::set<int> visited{current};
+        // A path longer than twice the chord (round a corner: up to sqrt 2) and two surface
+        // edges (a step may cross a whole triangle) strays.
+        const auto& first = mesh.triangle(mesh.nearest(origin).triangle);
+        double edge = 0.0;
+        for (int k = 0; k < 3; ++k)
+            edge = std::max(edge, (mesh.node(first[k]) - mesh.node(first[(k + 1) % 3])).norm());
+        const double longest = 2.0 * length + 2.0 * edge;
+        double walked = 0.0;
         for (int guard = 0; !local.hasEdge(current, target); ++guard) {
-            if (guard > 1000 || current == target) return false;
+            if (guard > 1000 || current == target || walked > longest) return false;
             const Eigen::Vector3d from = local.vertices[current].x;
             double bestScore = -0.5;
             int bestVertex = -1;
@@ -292,36 +318,66 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
             // The region cut must stay closed around the path (both triangles of every edge split).
             if (bestScore <= -0.5 || (bestVertex < 0 && local.edgeUses(bestEdge[0], bestEdge[1]) != 2))
                 return false;
-            if (bestVertex < 0)
+            if (bestVertex < 0) {
+                // Other sheets' traces on the split edge, interpolated (a crossing of their mouths).
+                const Vertex &u = local.vertices[bestEdge[0]], &w = local.vertices[bestEdge[1]];
+                const double t = (bestPoint - u.x).norm() / (w.x - u.x).norm();
+                MouthWeights weights = weightsAlong(cracks, s.a, s.b, bestPoint);
+                for (const auto& [end, factor] : {std::pair<const Vertex*, double>{&u, 1.0 - t}, {&w, t}})
+                    for (const auto& [node, value] : end->weights) {
+                        if (sheetOfNode(node) == s.sheet) continue;
+                        auto it = std::find_if(weights.begin(), weights.end(),
+                                               [node = node](const auto& nv) { return nv.first == node; });
+                        if (it == weights.end())
+                            weights.emplace_back(node, factor * value);
+                        else
+                            it->second += factor * value;
+                    }
                 bestVertex =
-                    local.splitEdge(bestEdge[0], bestEdge[1],
-                                    {bestPoint, nextId++, weightsAlong(cracks, s.a, s.b, bestPoint)});
-            else if (local.vertices[bestVertex].weights.empty())
-                local.vertices[bestVertex].weights =
-                    weightsAlong(cracks, s.a, s.b, local.vertices[bestVertex].x);
+                    local.splitEdge(bestEdge[0], bestEdge[1], {bestPoint, nextId++, std::move(weights)});
+            } else {
+                MouthWeights& weights = local.vertices[bestVertex].weights;
+                if (std::none_of(weights.begin(), weights.end(),
+                                 [&](const auto& nv) { return sheetOfNode(nv.first) == s.sheet; })) {
+                    const MouthWeights along = weightsAlong(cracks, s.a, s.b, local.vertices[bestVertex].x);
+                    weights.insert(weights.end(), along.begin(), along.end());
+                }
+            }
             if (bestVertex != target) path.push_back(bestVertex);
+            walked += (local.vertices[bestVertex].x - from).norm();
             heading = (local.vertices[bestVertex].x - from).normalized();
             visited.insert(bestVertex);
             current = bestVertex;
         }
         return true;
     };
-    // A mouth edge that cannot be followed over the surface (its crack plane does not lead from one
-    // node to the other near the chord) is left out of the cut, counted; its nodes keep their
-    // openings, whose cut hats then lack that edge's part.
+    // Each mouth edge is followed in its crack plane, else (where that plane leaves the surface
+    // away from the chord, on a curved surface) in the normal section through the chord: the
+    // plane through both nodes that contains the mean surface normal there. An edge that neither
+    // leads along is left out of the cut, counted; its nodes keep their openings, whose cut hats
+    // then lack that edge's part.
     std::vector<Segment> followed;
     for (const Segment& s : segments) {
         const LocalMesh before = local;
         const int idBefore = nextId;
-        std::vector<int> path;
-        if (follow(s, path)) {
-            pathOf[{s.a, s.b}] = path;
-            followed.push_back(s);
-            continue;
+        const Eigen::Vector3d a = cracks.node(s.a), b = cracks.node(s.b);
+        const Eigen::Vector3d normal =
+            mesh.normal(mesh.nearest(a).triangle) + mesh.normal(mesh.nearest(b).triangle);
+        const Eigen::Vector3d section = (b - a).cross(normal).normalized();
+        bool done = false;
+        for (const Eigen::Vector3d& plane : {cracks.normal(s.triangle), section}) {
+            std::vector<int> path;
+            if (plane.allFinite() && follow(s, plane, path)) {
+                pathOf[{s.a, s.b}] = path;
+                followed.push_back(s);
+                done = true;
+                break;
+            }
+            local = before;
+            nextId = idBefore;
         }
-        local = before;
-        nextId = idBefore;
-        ++out.unfollowedEdges;
+        if (done) continue;
+        out.unfollowedEdges.emplace_back(s.a, s.b);
         logf(LogLevel::Debug, "crack mouth: the sheet edge from crack node ", s.a, " to ", s.b,
              " could not be followed over the body's surface; it is left out of the mouth's cut");
     }
@@ -337,50 +393,70 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
             }
         }
     }
-    // Sides: a piece carries the cut hats when its centroid lies on the crack normal's side of
-    // the nearest mouth point; its corners off the mouth carry the extension values.
+    // Sides, per sheet (mouths of different sheets may cross): a piece carries a sheet's cut hats
+    // when its centroid lies on the crack normal's side of that sheet's nearest mouth point; its
+    // corners off the mouth carry the extension values.
     auto cornerWeights = [&](int v) -> const MouthWeights* {
         if (!local.vertices[v].weights.empty()) return &local.vertices[v].weights;
         const auto it = local.vertices[v].id < n ? extension.find(local.vertices[v].id) : extension.end();
         return it == extension.end() ? nullptr : &it->second;
     };
-    // Mouth edges of the cut (local vertex pair -> the crack triangle whose edge it follows).
-    std::map<std::pair<int, int>, int> mouthEdge;
+    // Mouth edges of the cut (local vertex pair -> the crack triangles whose edges it follows),
+    // each chain with the points that later walks inserted into it.
+    std::map<std::pair<int, int>, std::vector<int>> mouthEdge;
+    std::map<std::pair<int, int>, std::vector<int>> chainOf;  // (a, b) -> local vertices strictly between
     for (const Segment& s : segments) {
         std::vector<int> chain{localOfCrackNode.at(s.a)};
         const std::vector<int>& path = pathOf.at({s.a, s.b});
-        chain.insert(chain.end(), path.begin(), path.end());
-        chain.push_back(localOfCrackNode.at(s.b));
+        std::vector<int> walked(path);
+        walked.push_back(localOfCrackNode.at(s.b));
+        for (int v : walked) local.appendEdge(chain.back(), v, chain);
         for (std::size_t k = 0; k + 1 < chain.size(); ++k)
-            mouthEdge[{std::min(chain[k], chain[k + 1]), std::max(chain[k], chain[k + 1])}] = s.triangle;
+            mouthEdge[{std::min(chain[k], chain[k + 1]), std::max(chain[k], chain[k + 1])}].push_back(
+                s.triangle);
+        chainOf[{s.a, s.b}] = std::vector<int>(chain.begin() + 1, chain.end() - 1);
     }
-    // The side of each piece: from the mouth edge it lies on, else from the nearest mouth point.
-    std::vector<char> plus(local.triangles.size(), 0);
-    for (std::size_t i = 0; i < local.triangles.size(); ++i) {
+    // The side of a piece for a sheet: from that sheet's mouth edge it lies on, else from the
+    // sheet's nearest mouth point.
+    auto plusFor = [&](std::size_t i, int sheet) {
         const auto& c = local.triangles[i].corners;
         const Eigen::Vector3d centroid =
             (local.vertices[c[0]].x + local.vertices[c[1]].x + local.vertices[c[2]].x) / 3.0;
-        double side = nearestMouth(centroid).side;
         for (int k = 0; k < 3; ++k) {
             const auto it = mouthEdge.find({std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])});
             if (it == mouthEdge.end()) continue;
-            const Eigen::Vector3d on =
-                closestPointOnSegment(centroid, local.vertices[c[k]].x, local.vertices[c[(k + 1) % 3]].x);
-            side = (centroid - on).dot(cracks.normal(it->second));
-            break;
+            for (int t : it->second) {
+                if (cracks.sheetOf(t) != sheet) continue;
+                const Eigen::Vector3d on =
+                    closestPointOnSegment(centroid, local.vertices[c[k]].x, local.vertices[c[(k + 1) % 3]].x);
+                return (centroid - on).dot(cracks.normal(t)) > 0.0;
+            }
         }
-        plus[i] = side > 0.0;
-    }
-    // A surface node off the mouth that has pieces on both sides (beyond the end of the mouth, where
-    // the + and - sides meet without a mouth edge between them) keeps no plateau value: the cut
-    // hats stay continuous there.
+        return nearestMouth(centroid, sheet).side > 0.0;
+    };
+    std::vector<std::map<int, bool>> plus(local.triangles.size());  // piece -> sheet -> on its + side
+    for (std::size_t i = 0; i < local.triangles.size(); ++i)
+        for (int v : local.triangles[i].corners)
+            if (const MouthWeights* w = cornerWeights(v))
+                for (const auto& [node, value] : *w) {
+                    const int sheet = sheetOfNode(node);
+                    if (!plus[i].count(sheet)) plus[i][sheet] = plusFor(i, sheet);
+                }
+    // A surface node off the mouth that has pieces on both sides of its sheet (beyond the end of
+    // the mouth, where the + and - sides meet without a mouth edge between them) keeps no plateau
+    // value: the cut hats stay continuous there.
     {
-        std::map<int, int> sides;  // local vertex -> bit 1: on a + piece, bit 2: on a - piece
+        std::map<int, int> sides;  // surface node with a plateau -> bit 1: on a + piece, bit 2: on a - piece
         for (std::size_t i = 0; i < local.triangles.size(); ++i)
-            for (int v : local.triangles[i].corners) sides[v] |= plus[i] ? 1 : 2;
-        for (const auto& [v, bits] : sides)
-            if (bits == 3 && local.vertices[v].weights.empty() && local.vertices[v].id < n)
-                extension.erase(local.vertices[v].id);
+            for (int v : local.triangles[i].corners) {
+                const Vertex& x = local.vertices[v];
+                if (!x.weights.empty() || x.id >= n) continue;
+                const auto it = extension.find(x.id);
+                if (it == extension.end()) continue;
+                sides[x.id] |= plus[i].at(sheetOfNode(it->second.front().first)) ? 1 : 2;
+            }
+        for (const auto& [id, bits] : sides)
+            if (bits == 3) extension.erase(id);
     }
     std::map<int, int> pieceCount;
     for (const auto& t : local.triangles) ++pieceCount[t.owner];
@@ -391,9 +467,10 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         if (!weighted && pieceCount[t.owner] == 1) continue;
         MouthPiece piece{panelOfCorners(local, t.corners, mesh.normal(t.owner)), {}};
         piece.panel.normal = mesh.normal(t.owner);
-        if (weighted && plus[i])
-            for (int k = 0; k < 3; ++k)
-                if (const MouthWeights* w = cornerWeights(t.corners[k])) piece.weights[k] = *w;
+        for (int k = 0; k < 3; ++k)
+            if (const MouthWeights* w = cornerWeights(t.corners[k]))
+                for (const auto& [node, value] : *w)
+                    if (plus[i].at(sheetOfNode(node))) piece.weights[k].emplace_back(node, value);
         out.surfacePieces[t.owner].push_back(std::move(piece));
     }
     // Surface triangles neither split nor carrying a cut hat need no pieces.
@@ -407,7 +484,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     // Crack triangles whose mouth edges pass through points of the cut: split there too.
     std::map<int, LocalMesh> crackSplits;
     for (const Segment& s : segments) {
-        const std::vector<int>& path = pathOf.at({s.a, s.b});
+        const std::vector<int>& path = chainOf.at({s.a, s.b});
         if (path.empty()) continue;
         LocalMesh& split = crackSplits[s.triangle];
         std::array<int, 3> corner;
@@ -426,7 +503,17 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         };
         int previous = localOf(s.a);
         const int end = localOf(s.b);
-        for (int v : path) previous = split.splitEdge(previous, end, local.vertices[v]);
+        const auto& corners = cracks.triangle(s.triangle);
+        for (int v : path) {
+            Vertex x = local.vertices[v];  // its crack hats: this triangle's corners only
+            x.weights.erase(std::remove_if(x.weights.begin(), x.weights.end(),
+                                           [&](const auto& nv) {
+                                               return std::find(corners.begin(), corners.end(), nv.first) ==
+                                                      corners.end();
+                                           }),
+                            x.weights.end());
+            previous = split.splitEdge(previous, end, std::move(x));
+        }
     }
     for (const auto& [t, split] : crackSplits)
         for (const auto& piece : split.triangles) {
