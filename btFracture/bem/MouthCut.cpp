@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <set>
 #include <string>
@@ -139,13 +140,11 @@ int mouthIdOf(const SurfaceMesh& mesh, const CrackMesh& cracks, int crackNode) {
 MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     MouthCut out;
     struct Segment {
-        int a, b, triangle, sheet;
+        int a, b, triangle;
     };
-    auto sheetOfNode = [&](int i) { return cracks.sheetOf(cracks.trianglesAtNode(i).front()); };
     std::vector<Segment> segments;
     for (const auto& e : cracks.boundaryEdges())
-        if (cracks.isMouthEdge(e.a, e.b))
-            segments.push_back({e.a, e.b, e.triangle, cracks.sheetOf(e.triangle)});
+        if (cracks.isMouthEdge(e.a, e.b)) segments.push_back({e.a, e.b, e.triangle});
     std::set<int> boundaryOnSurface;  // crack nodes on the sheets' boundary and on the surface
     for (const auto& e : cracks.boundaryEdges())
         for (int i : {e.a, e.b})
@@ -163,17 +162,21 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         double side = 0.0;
         MouthWeights weights;
     };
-    auto nearestMouth = [&](const Eigen::Vector3d& x, int sheet = -1) {
+    // Mouth chains: the connected runs of mouth edges (filled once the edges are followed). Each
+    // chain has its own sides: a sheet whose mouth crosses another's, or that leaves the surface
+    // and comes back to it, has its cut hats jump only across the chain of their own nodes.
+    std::map<int, int> chainOfNode;  // crack node on the surface -> its chain
+    auto nearestMouth = [&](const Eigen::Vector3d& x, int chain = -1) {
         NearestMouth best;
         for (const Segment& s : segments) {
-            if (sheet >= 0 && s.sheet != sheet) continue;
+            if (chain >= 0 && chainOfNode.at(s.a) != chain) continue;
             const Eigen::Vector3d c = closestPointOnSegment(x, cracks.node(s.a), cracks.node(s.b));
             const double d = (x - c).norm();
             if (d < best.distance)
                 best = {d, (x - c).dot(cracks.normal(s.triangle)), weightsAlong(cracks, s.a, s.b, c)};
         }
         for (int i : surfaceNodes) {
-            if (sheet >= 0 && sheetOfNode(i) != sheet) continue;
+            if (chain >= 0 && chainOfNode.at(i) != chain) continue;
             const double d = (x - cracks.node(i)).norm();
             if (d < best.distance) {
                 Eigen::Vector3d normal = Eigen::Vector3d::Zero();
@@ -325,7 +328,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
                 MouthWeights weights = weightsAlong(cracks, s.a, s.b, bestPoint);
                 for (const auto& [end, factor] : {std::pair<const Vertex*, double>{&u, 1.0 - t}, {&w, t}})
                     for (const auto& [node, value] : end->weights) {
-                        if (sheetOfNode(node) == s.sheet) continue;
+                        if (node == s.a || node == s.b) continue;
                         auto it = std::find_if(weights.begin(), weights.end(),
                                                [node = node](const auto& nv) { return nv.first == node; });
                         if (it == weights.end())
@@ -338,7 +341,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
             } else {
                 MouthWeights& weights = local.vertices[bestVertex].weights;
                 if (std::none_of(weights.begin(), weights.end(),
-                                 [&](const auto& nv) { return sheetOfNode(nv.first) == s.sheet; })) {
+                                 [&](const auto& nv) { return nv.first == s.a || nv.first == s.b; })) {
                     const MouthWeights along = weightsAlong(cracks, s.a, s.b, local.vertices[bestVertex].x);
                     weights.insert(weights.end(), along.begin(), along.end());
                 }
@@ -393,17 +396,29 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
             }
         }
     }
-    // Sides, per sheet (mouths of different sheets may cross): a piece carries a sheet's cut hats
-    // when its centroid lies on the crack normal's side of that sheet's nearest mouth point; its
-    // corners off the mouth carry the extension values.
+    {
+        std::map<int, int> parent;
+        std::function<int(int)> root = [&](int i) {
+            const auto it = parent.find(i);
+            return it == parent.end() || it->second == i ? i : (it->second = root(it->second));
+        };
+        for (int i : surfaceNodes) parent[i] = i;
+        for (const Segment& s : segments) {
+            const int a = root(s.a), b = root(s.b);
+            parent[std::max(a, b)] = std::min(a, b);
+        }
+        for (int i : surfaceNodes) chainOfNode[i] = root(i);
+    }
+    // Corner values: on the mouth the traces, else the extension values.
     auto cornerWeights = [&](int v) -> const MouthWeights* {
         if (!local.vertices[v].weights.empty()) return &local.vertices[v].weights;
         const auto it = local.vertices[v].id < n ? extension.find(local.vertices[v].id) : extension.end();
         return it == extension.end() ? nullptr : &it->second;
     };
-    // Mouth edges of the cut (local vertex pair -> the crack triangles whose edges it follows),
+    // Mouth edges of the cut (local vertex pair -> the crack triangles whose edges it follows, with
+    // their chains),
     // each chain with the points that later walks inserted into it.
-    std::map<std::pair<int, int>, std::vector<int>> mouthEdge;
+    std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> mouthEdge;
     std::map<std::pair<int, int>, std::vector<int>> chainOf;  // (a, b) -> local vertices strictly between
     for (const Segment& s : segments) {
         std::vector<int> chain{localOfCrackNode.at(s.a)};
@@ -412,36 +427,82 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         walked.push_back(localOfCrackNode.at(s.b));
         for (int v : walked) local.appendEdge(chain.back(), v, chain);
         for (std::size_t k = 0; k + 1 < chain.size(); ++k)
-            mouthEdge[{std::min(chain[k], chain[k + 1]), std::max(chain[k], chain[k + 1])}].push_back(
-                s.triangle);
+            mouthEdge[{std::min(chain[k], chain[k + 1]), std::max(chain[k], chain[k + 1])}].emplace_back(
+                s.triangle, chainOfNode.at(s.a));
         chainOf[{s.a, s.b}] = std::vector<int>(chain.begin() + 1, chain.end() - 1);
     }
-    // The side of a piece for a sheet: from that sheet's mouth edge it lies on, else from the
-    // sheet's nearest mouth point.
-    auto plusFor = [&](std::size_t i, int sheet) {
-        const auto& c = local.triangles[i].corners;
-        const Eigen::Vector3d centroid =
-            (local.vertices[c[0]].x + local.vertices[c[1]].x + local.vertices[c[2]].x) / 3.0;
-        for (int k = 0; k < 3; ++k) {
-            const auto it = mouthEdge.find({std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])});
-            if (it == mouthEdge.end()) continue;
-            for (int t : it->second) {
-                if (cracks.sheetOf(t) != sheet) continue;
-                const Eigen::Vector3d on =
-                    closestPointOnSegment(centroid, local.vertices[c[k]].x, local.vertices[c[(k + 1) % 3]].x);
-                return (centroid - on).dot(cracks.normal(t)) > 0.0;
-            }
-        }
-        return nearestMouth(centroid, sheet).side > 0.0;
-    };
-    std::vector<std::map<int, bool>> plus(local.triangles.size());  // piece -> sheet -> on its + side
+    // The sides of a chain, by connection: the two pieces along each of its mouth edges take the
+    // sides of the crack normal there, and each side spreads over the pieces the chain's hats
+    // reach, across every edge but the chain's mouth edges (so a piece that touches the mouth at a
+    // corner only, where a path leaves the chord's plane, gets its neighbours' side); a piece no
+    // side reaches takes the side of the chain's nearest mouth point.
+    std::map<std::pair<int, int>, std::vector<int>> piecesAtEdge;
     for (std::size_t i = 0; i < local.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const int a = local.triangles[i].corners[k], b = local.triangles[i].corners[(k + 1) % 3];
+            piecesAtEdge[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(i));
+        }
+    auto centroidOf = [&](int i) {
+        const auto& c = local.triangles[i].corners;
+        return Eigen::Vector3d((local.vertices[c[0]].x + local.vertices[c[1]].x + local.vertices[c[2]].x) /
+                               3.0);
+    };
+    std::map<int, std::vector<int>> supportOf;  // chain -> pieces with a corner carrying its hats
+    for (std::size_t i = 0; i < local.triangles.size(); ++i) {
+        std::set<int> sheets;
         for (int v : local.triangles[i].corners)
             if (const MouthWeights* w = cornerWeights(v))
-                for (const auto& [node, value] : *w) {
-                    const int sheet = sheetOfNode(node);
-                    if (!plus[i].count(sheet)) plus[i][sheet] = plusFor(i, sheet);
+                for (const auto& nv : *w) sheets.insert(chainOfNode.at(nv.first));
+        for (int sheet : sheets) supportOf[sheet].push_back(static_cast<int>(i));
+    }
+    std::vector<std::map<int, bool>> plus(local.triangles.size());  // piece -> chain -> on its + side
+    for (const auto& [sheet, support] : supportOf) {
+        std::set<int> inSupport(support.begin(), support.end());
+        auto isSheetMouth = [&](const std::pair<int, int>& e) {
+            const auto it = mouthEdge.find(e);
+            if (it == mouthEdge.end()) return -1;
+            for (const auto& [t, chain] : it->second)
+                if (chain == sheet) return t;
+            return -1;
+        };
+        // A sheet edge a -> b in its triangle's orientation has the triangle to its left seen along
+        // n_c, inside the body, so n_c points to its left seen from outside: the surface piece
+        // that runs along the path from a to b counter-clockwise (outward normal) is +.
+        std::vector<int> queue;
+        for (const Segment& seg : segments) {
+            if (chainOfNode.at(seg.a) != sheet) continue;
+            std::vector<int> path{localOfCrackNode.at(seg.a)};
+            const std::vector<int>& between = chainOf.at({seg.a, seg.b});
+            path.insert(path.end(), between.begin(), between.end());
+            path.push_back(localOfCrackNode.at(seg.b));
+            for (std::size_t k = 0; k + 1 < path.size(); ++k) {
+                const int u = path[k], w = path[k + 1];
+                for (int i : piecesAtEdge.at({std::min(u, w), std::max(u, w)})) {
+                    if (plus[i].count(sheet)) continue;
+                    const auto& c = local.triangles[i].corners;
+                    bool forward = false;
+                    for (int j = 0; j < 3; ++j) forward |= c[j] == u && c[(j + 1) % 3] == w;
+                    plus[i][sheet] = forward;
+                    queue.push_back(i);
                 }
+            }
+        }
+        for (std::size_t head = 0; head < queue.size(); ++head) {
+            const int i = queue[head];
+            const auto& c = local.triangles[i].corners;
+            for (int k = 0; k < 3; ++k) {
+                const std::pair<int, int> e{std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])};
+                if (isSheetMouth(e) >= 0) continue;
+                for (int j : piecesAtEdge.at(e))
+                    if (j != i && inSupport.count(j) && !plus[j].count(sheet)) {
+                        plus[j][sheet] = plus[i].at(sheet);
+                        queue.push_back(j);
+                    }
+            }
+        }
+        for (int i : support)
+            if (!plus[i].count(sheet)) plus[i][sheet] = nearestMouth(centroidOf(i), sheet).side > 0.0;
+    }
     // A surface node off the mouth that has pieces on both sides of its sheet (beyond the end of
     // the mouth, where the + and - sides meet without a mouth edge between them) keeps no plateau
     // value: the cut hats stay continuous there.
@@ -453,7 +514,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
                 if (!x.weights.empty() || x.id >= n) continue;
                 const auto it = extension.find(x.id);
                 if (it == extension.end()) continue;
-                sides[x.id] |= plus[i].at(sheetOfNode(it->second.front().first)) ? 1 : 2;
+                sides[x.id] |= plus[i].at(chainOfNode.at(it->second.front().first)) ? 1 : 2;
             }
         for (const auto& [id, bits] : sides)
             if (bits == 3) extension.erase(id);
@@ -470,7 +531,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         for (int k = 0; k < 3; ++k)
             if (const MouthWeights* w = cornerWeights(t.corners[k]))
                 for (const auto& [node, value] : *w)
-                    if (plus[i].at(sheetOfNode(node))) piece.weights[k].emplace_back(node, value);
+                    if (plus[i].at(chainOfNode.at(node))) piece.weights[k].emplace_back(node, value);
         out.surfacePieces[t.owner].push_back(std::move(piece));
     }
     // Surface triangles neither split nor carrying a cut hat need no pieces.
