@@ -154,8 +154,8 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
 
     const int n = mesh.nodeCount();
     const double tolerance = 1e-9 * mesh.radius();
-    // The nearest point of the mouth line (or of a crack node on the surface) to x, of one sheet
-    // or (-1) of any: its distance, the side of x (along the crack normal there) and the crack
+    // The nearest point of the mouth line (or of a crack node on the surface) to x, of one mouth
+    // chain or (-1) of any: its distance, the side of x (along the crack normal there) and the crack
     // hats' trace there.
     struct NearestMouth {
         double distance = std::numeric_limits<double>::infinity();
@@ -322,7 +322,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
             if (bestScore <= -0.5 || (bestVertex < 0 && local.edgeUses(bestEdge[0], bestEdge[1]) != 2))
                 return false;
             if (bestVertex < 0) {
-                // Other sheets' traces on the split edge, interpolated (a crossing of their mouths).
+                // Other paths' traces on the split edge, interpolated (mouths crossing).
                 const Vertex &u = local.vertices[bestEdge[0]], &w = local.vertices[bestEdge[1]];
                 const double t = (bestPoint - u.x).norm() / (w.x - u.x).norm();
                 MouthWeights weights = weightsAlong(cracks, s.a, s.b, bestPoint);
@@ -416,20 +416,18 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         return it == extension.end() ? nullptr : &it->second;
     };
     // Mouth edges of the cut (local vertex pair -> the crack triangles whose edges it follows, with
-    // their chains),
-    // each chain with the points that later walks inserted into it.
+    // their chains), from each edge's path with the points that later walks inserted into it.
     std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> mouthEdge;
-    std::map<std::pair<int, int>, std::vector<int>> chainOf;  // (a, b) -> local vertices strictly between
+    std::map<std::pair<int, int>, std::vector<int>> cutPathOf;  // (a, b) -> local vertices strictly between
     for (const Segment& s : segments) {
-        std::vector<int> chain{localOfCrackNode.at(s.a)};
-        const std::vector<int>& path = pathOf.at({s.a, s.b});
-        std::vector<int> walked(path);
+        std::vector<int> line{localOfCrackNode.at(s.a)};
+        std::vector<int> walked(pathOf.at({s.a, s.b}));
         walked.push_back(localOfCrackNode.at(s.b));
-        for (int v : walked) local.appendEdge(chain.back(), v, chain);
-        for (std::size_t k = 0; k + 1 < chain.size(); ++k)
-            mouthEdge[{std::min(chain[k], chain[k + 1]), std::max(chain[k], chain[k + 1])}].emplace_back(
+        for (int v : walked) local.appendEdge(line.back(), v, line);
+        for (std::size_t k = 0; k + 1 < line.size(); ++k)
+            mouthEdge[{std::min(line[k], line[k + 1]), std::max(line[k], line[k + 1])}].emplace_back(
                 s.triangle, chainOfNode.at(s.a));
-        chainOf[{s.a, s.b}] = std::vector<int>(chain.begin() + 1, chain.end() - 1);
+        cutPathOf[{s.a, s.b}] = std::vector<int>(line.begin() + 1, line.end() - 1);
     }
     // The sides of a chain, by connection: the two pieces along each of its mouth edges take the
     // sides of the crack normal there, and each side spreads over the pieces the chain's hats
@@ -449,20 +447,20 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     };
     std::map<int, std::vector<int>> supportOf;  // chain -> pieces with a corner carrying its hats
     for (std::size_t i = 0; i < local.triangles.size(); ++i) {
-        std::set<int> sheets;
+        std::set<int> chains;
         for (int v : local.triangles[i].corners)
             if (const MouthWeights* w = cornerWeights(v))
-                for (const auto& nv : *w) sheets.insert(chainOfNode.at(nv.first));
-        for (int sheet : sheets) supportOf[sheet].push_back(static_cast<int>(i));
+                for (const auto& nv : *w) chains.insert(chainOfNode.at(nv.first));
+        for (int chain : chains) supportOf[chain].push_back(static_cast<int>(i));
     }
     std::vector<std::map<int, bool>> plus(local.triangles.size());  // piece -> chain -> on its + side
-    for (const auto& [sheet, support] : supportOf) {
+    for (const auto& [chain, support] : supportOf) {
         std::set<int> inSupport(support.begin(), support.end());
-        auto isSheetMouth = [&](const std::pair<int, int>& e) {
+        auto mouthTriangle = [&](const std::pair<int, int>& e) {
             const auto it = mouthEdge.find(e);
             if (it == mouthEdge.end()) return -1;
-            for (const auto& [t, chain] : it->second)
-                if (chain == sheet) return t;
+            for (const auto& [t, own] : it->second)
+                if (own == chain) return t;
             return -1;
         };
         // A sheet edge a -> b in its triangle's orientation has the triangle to its left seen along
@@ -470,19 +468,19 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         // that runs along the path from a to b counter-clockwise (outward normal) is +.
         std::vector<int> queue;
         for (const Segment& seg : segments) {
-            if (chainOfNode.at(seg.a) != sheet) continue;
+            if (chainOfNode.at(seg.a) != chain) continue;
             std::vector<int> path{localOfCrackNode.at(seg.a)};
-            const std::vector<int>& between = chainOf.at({seg.a, seg.b});
+            const std::vector<int>& between = cutPathOf.at({seg.a, seg.b});
             path.insert(path.end(), between.begin(), between.end());
             path.push_back(localOfCrackNode.at(seg.b));
             for (std::size_t k = 0; k + 1 < path.size(); ++k) {
                 const int u = path[k], w = path[k + 1];
                 for (int i : piecesAtEdge.at({std::min(u, w), std::max(u, w)})) {
-                    if (plus[i].count(sheet)) continue;
+                    if (plus[i].count(chain)) continue;
                     const auto& c = local.triangles[i].corners;
                     bool forward = false;
                     for (int j = 0; j < 3; ++j) forward |= c[j] == u && c[(j + 1) % 3] == w;
-                    plus[i][sheet] = forward;
+                    plus[i][chain] = forward;
                     queue.push_back(i);
                 }
             }
@@ -492,18 +490,18 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
             const auto& c = local.triangles[i].corners;
             for (int k = 0; k < 3; ++k) {
                 const std::pair<int, int> e{std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])};
-                if (isSheetMouth(e) >= 0) continue;
+                if (mouthTriangle(e) >= 0) continue;
                 for (int j : piecesAtEdge.at(e))
-                    if (j != i && inSupport.count(j) && !plus[j].count(sheet)) {
-                        plus[j][sheet] = plus[i].at(sheet);
+                    if (j != i && inSupport.count(j) && !plus[j].count(chain)) {
+                        plus[j][chain] = plus[i].at(chain);
                         queue.push_back(j);
                     }
             }
         }
         for (int i : support)
-            if (!plus[i].count(sheet)) plus[i][sheet] = nearestMouth(centroidOf(i), sheet).side > 0.0;
+            if (!plus[i].count(chain)) plus[i][chain] = nearestMouth(centroidOf(i), chain).side > 0.0;
     }
-    // A surface node off the mouth that has pieces on both sides of its sheet (beyond the end of
+    // A surface node off the mouth that has pieces on both sides of its chain (beyond the end of
     // the mouth, where the + and - sides meet without a mouth edge between them) keeps no plateau
     // value: the cut hats stay continuous there.
     {
@@ -545,7 +543,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     // Crack triangles whose mouth edges pass through points of the cut: split there too.
     std::map<int, LocalMesh> crackSplits;
     for (const Segment& s : segments) {
-        const std::vector<int>& path = chainOf.at({s.a, s.b});
+        const std::vector<int>& path = cutPathOf.at({s.a, s.b});
         if (path.empty()) continue;
         LocalMesh& split = crackSplits[s.triangle];
         std::array<int, 3> corner;
