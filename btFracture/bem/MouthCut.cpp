@@ -268,7 +268,8 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     // Follow every mouth edge over the surface where its crack plane cuts it.
     int nextId = n + cracks.nodeCount();
     std::map<std::pair<int, int>, std::vector<int>> pathOf;  // (a, b) -> local vertices strictly between
-    auto follow = [&](const Segment& s, const Eigen::Vector3d& m, std::vector<int>& path) {
+    // `longest`: a path longer than that has strayed.
+    auto follow = [&](const Segment& s, const Eigen::Vector3d& m, double longest, std::vector<int>& path) {
         const int target = localOfCrackNode.at(s.b);
         const Eigen::Vector3d origin = cracks.node(s.a);
         const double length = (cracks.node(s.b) - origin).norm();
@@ -278,13 +279,6 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         // on the way the curve goes (it may turn round a corner of the body), never back.
         Eigen::Vector3d heading = (local.vertices[target].x - local.vertices[current].x).normalized();
         std::set<int> visited{current};
-        // A path longer than twice the chord (round a corner: up to sqrt 2) and two surface
-        // edges (a step may cross a whole triangle) strays.
-        const auto& first = mesh.triangle(mesh.nearest(origin).triangle);
-        double edge = 0.0;
-        for (int k = 0; k < 3; ++k)
-            edge = std::max(edge, (mesh.node(first[k]) - mesh.node(first[(k + 1) % 3])).norm());
-        const double longest = 2.0 * length + 2.0 * edge;
         double walked = 0.0;
         for (int guard = 0; !local.hasEdge(current, target); ++guard) {
             if (guard > 1000 || current == target || walked > longest) return false;
@@ -364,22 +358,28 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         const LocalMesh before = local;
         const int idBefore = nextId;
         const Eigen::Vector3d a = cracks.node(s.a), b = cracks.node(s.b);
-        const Eigen::Vector3d normal =
-            mesh.normal(mesh.nearest(a).triangle) + mesh.normal(mesh.nearest(b).triangle);
-        const Eigen::Vector3d section = (b - a).cross(normal).normalized();
-        bool done = false;
-        for (const Eigen::Vector3d& plane : {cracks.normal(s.triangle), section}) {
+        const int atA = mesh.nearest(a).triangle;
+        // A path longer than twice the chord (round a corner: up to sqrt 2) and two surface
+        // edges (a step may cross a whole triangle) strays.
+        double edge = 0.0;
+        for (int k = 0; k < 3; ++k)
+            edge = std::max(
+                edge, (mesh.node(mesh.triangle(atA)[k]) - mesh.node(mesh.triangle(atA)[(k + 1) % 3])).norm());
+        const double longest = 2.0 * (b - a).norm() + 2.0 * edge;
+        auto tryPlane = [&](const Eigen::Vector3d& plane) {
             std::vector<int> path;
-            if (plane.allFinite() && follow(s, plane, path)) {
+            if (plane.allFinite() && follow(s, plane, longest, path)) {
                 pathOf[{s.a, s.b}] = path;
                 followed.push_back(s);
-                done = true;
-                break;
+                return true;
             }
             local = before;
             nextId = idBefore;
-        }
-        if (done) continue;
+            return false;
+        };
+        if (tryPlane(cracks.normal(s.triangle)) ||
+            tryPlane((b - a).cross(mesh.normal(atA) + mesh.normal(mesh.nearest(b).triangle)).normalized()))
+            continue;
         out.unfollowedEdges.emplace_back(s.a, s.b);
         logf(LogLevel::Debug, "crack mouth: the sheet edge from crack node ", s.a, " to ", s.b,
              " could not be followed over the body's surface; it is left out of the mouth's cut");
@@ -415,9 +415,9 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         const auto it = local.vertices[v].id < n ? extension.find(local.vertices[v].id) : extension.end();
         return it == extension.end() ? nullptr : &it->second;
     };
-    // Mouth edges of the cut (local vertex pair -> the crack triangles whose edges it follows, with
-    // their chains), from each edge's path with the points that later walks inserted into it.
-    std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> mouthEdge;
+    // Mouth edges of the cut (local vertex pair -> the chains it belongs to), from each edge's path
+    // with the points that later walks inserted into it.
+    std::map<std::pair<int, int>, std::set<int>> mouthEdge;
     std::map<std::pair<int, int>, std::vector<int>> cutPathOf;  // (a, b) -> local vertices strictly between
     for (const Segment& s : segments) {
         std::vector<int> line{localOfCrackNode.at(s.a)};
@@ -425,15 +425,15 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         walked.push_back(localOfCrackNode.at(s.b));
         for (int v : walked) local.appendEdge(line.back(), v, line);
         for (std::size_t k = 0; k + 1 < line.size(); ++k)
-            mouthEdge[{std::min(line[k], line[k + 1]), std::max(line[k], line[k + 1])}].emplace_back(
-                s.triangle, chainOfNode.at(s.a));
+            mouthEdge[{std::min(line[k], line[k + 1]), std::max(line[k], line[k + 1])}].insert(
+                chainOfNode.at(s.a));
         cutPathOf[{s.a, s.b}] = std::vector<int>(line.begin() + 1, line.end() - 1);
     }
-    // The sides of a chain, by connection: the two pieces along each of its mouth edges take the
-    // sides of the crack normal there, and each side spreads over the pieces the chain's hats
-    // reach, across every edge but the chain's mouth edges (so a piece that touches the mouth at a
-    // corner only, where a path leaves the chord's plane, gets its neighbours' side); a piece no
-    // side reaches takes the side of the chain's nearest mouth point.
+    // The sides of a chain, by orientation and connection: the two pieces along each of its mouth
+    // edges take their sides from the sheet edge's direction (below), and each side spreads over
+    // the pieces the chain's hats reach, across every edge but the chain's mouth edges (so a piece
+    // that touches the mouth at a corner only gets its neighbours' side); a piece no side reaches
+    // takes the side of the chain's nearest mouth point.
     std::map<std::pair<int, int>, std::vector<int>> piecesAtEdge;
     for (std::size_t i = 0; i < local.triangles.size(); ++i)
         for (int k = 0; k < 3; ++k) {
@@ -456,12 +456,9 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     std::vector<std::map<int, bool>> plus(local.triangles.size());  // piece -> chain -> on its + side
     for (const auto& [chain, support] : supportOf) {
         std::set<int> inSupport(support.begin(), support.end());
-        auto mouthTriangle = [&](const std::pair<int, int>& e) {
+        auto isOwnMouth = [&](const std::pair<int, int>& e) {
             const auto it = mouthEdge.find(e);
-            if (it == mouthEdge.end()) return -1;
-            for (const auto& [t, own] : it->second)
-                if (own == chain) return t;
-            return -1;
+            return it != mouthEdge.end() && it->second.count(chain) > 0;
         };
         // A sheet edge a -> b in its triangle's orientation has the triangle to its left seen along
         // n_c, inside the body, so n_c points to its left seen from outside: the surface piece
@@ -490,7 +487,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
             const auto& c = local.triangles[i].corners;
             for (int k = 0; k < 3; ++k) {
                 const std::pair<int, int> e{std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])};
-                if (mouthTriangle(e) >= 0) continue;
+                if (isOwnMouth(e)) continue;
                 for (int j : piecesAtEdge.at(e))
                     if (j != i && inSupport.count(j) && !plus[j].count(chain)) {
                         plus[j][chain] = plus[i].at(chain);
