@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace btfracture {
 
@@ -56,6 +57,24 @@ void BorderedCholesky::solveInPlace(Eigen::Ref<Eigen::VectorXd> x) const {
         p->L.rightCols(h).triangularView<Eigen::Lower>().transpose().solveInPlace(xp);
         if (p->row0 > 0) x.head(p->row0).noalias() -= p->L.leftCols(p->row0).transpose() * xp;
     }
+}
+
+void BorderedCholesky::truncate(int rows) {
+    if (rows >= size_) return;
+    while (!panels_.empty() && panels_.back().row0 >= rows) panels_.pop_back();
+    if (!panels_.empty()) {
+        Panel& p = panels_.back();
+        const int keep = rows - p.row0;
+        if (keep < p.L.rows()) p.L = p.L.topLeftCorner(keep, p.row0 + keep).eval();
+    }
+    size_ = rows;
+    minDiagonal_ = std::numeric_limits<double>::infinity();
+    maxDiagonal_ = 0.0;
+    for (const Panel& p : panels_)
+        for (int i = 0; i < p.L.rows(); ++i) {
+            minDiagonal_ = std::min(minDiagonal_, p.L(i, p.row0 + i));
+            maxDiagonal_ = std::max(maxDiagonal_, p.L(i, p.row0 + i));
+        }
 }
 
 double BorderedCholesky::diagonalRatio() const {

@@ -24,6 +24,9 @@ public:
     // `minimumDiagonalRatio`.
     bool extend(const Eigen::Ref<const Eigen::MatrixXd>& columns, double minimumDiagonalRatio = 0.0);
 
+    // Keeps the factor of the leading `rows` x `rows` block only (rows <= size()).
+    void truncate(int rows);
+
     // x := L^-1 x for size() rows and any number of columns.
     void forwardSubstitute(Eigen::Ref<Eigen::MatrixXd> x) const;
     // x := S^-1 x.

@@ -12,7 +12,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <map>
+#include <optional>
 
 namespace btfracture {
 namespace {
@@ -64,6 +67,20 @@ BasisElement pieceElement(const MouthPiece& piece, const CrackMesh& cracks, cons
         }
     for (Restriction& r : e.functions) r.curl = pieceCurl(piece.panel, r.values);
     return e;
+}
+
+// A hash of a basis function's restriction to one element (corners and values, bit for bit).
+std::uint64_t fingerprintOf(const Panel& panel, const std::array<double, 3>& values) {
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+    auto add = [&](double x) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        for (int b = 0; b < 8; ++b) h = (h ^ ((bits >> (8 * b)) & 0xff)) * 1099511628211ull;
+    };
+    for (const Eigen::Vector3d& c : panel.corners)
+        for (int i = 0; i < 3; ++i) add(c[i]);
+    for (double v : values) add(v);
+    return h;
 }
 
 // The elements of the given unknowns' basis functions.
@@ -217,7 +234,8 @@ const Eigen::MatrixXd& CrackSystem::crackCrackBlock() const {
 
 int CrackSystem::update() {
     cracks_.refreshUnknowns(solver_.mesh());
-    if (cracks_.unknownCount() == assembledUnknowns_) return 0;
+    const int before = assembledUnknowns_;
+    if (cracks_.unknownCount() == 0) return 0;
     // A mouth edge the cut could not follow would leave its nodes' cut hats jumping across surface
     // edges (not conforming: S loses positive definiteness). Its nodes new to the system are held
     // at zero instead, the edge front from now on; nodes assembled earlier keep their unknowns.
@@ -242,105 +260,162 @@ int CrackSystem::update() {
              "Mouth)");
     unfollowedEdges_ = std::max(unfollowedEdges_, unfollowed);
     const int total = cracks_.unknownCount();
-    if (total == assembledUnknowns_) return 0;
-    std::vector<int> fresh(total - assembledUnknowns_);
-    for (int i = 0; i < static_cast<int>(fresh.size()); ++i) fresh[i] = assembledUnknowns_ + i;
-    const int old3 = 3 * assembledUnknowns_, new3 = 3 * total, added = new3 - old3;
-
-    // Surface-crack coupling for the new unknowns: new columns of C, new rows of G.
     const QuadratureSettings& q = solver_.settings().quadrature;
-    const CrackSurfaceCoupling coupling =
-        assembleCoupling(solver_, cracks_, fresh, CouplingBlocks::SurfaceAndLoad, cut);
-
-    // Crack-crack block D in the new unknowns' columns (their rows follow by symmetry).
-    Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(new3, added);
-    const double mu = solver_.material().shearModulus(), nu = solver_.material().poissonRatio();
     std::vector<int> all(total);
     for (int k = 0; k < total; ++k) all[k] = k;
     const std::vector<BasisElement> elements = basisElements(solver_.mesh(), cracks_, all, cut, q);
-    const int first = assembledUnknowns_;
-    std::vector<char> touchesFresh(elements.size());
-    for (std::size_t e = 0; e < elements.size(); ++e)
-        touchesFresh[e] = std::any_of(elements[e].functions.begin(), elements[e].functions.end(),
-                                      [&](const Restriction& r) { return r.unknown >= first; });
-    // Each unordered pair once (bit-exact symmetry of D); its block and the transposed block,
-    // each entry kept where its column is a new unknown.
-    auto addBlock = [&](const BasisElement& x, const BasisElement& y, const PairCoefficients& coeff,
-                        bool transposed) {
-        for (const Restriction& fy : y.functions) {
-            const int l = fy.unknown;
-            const Eigen::Vector3d& d = fy.curl;
-            double P[9];
-            symTimesCross(coeff.L, d.data(), P);
-            for (const Restriction& fx : x.functions) {
-                const int k = fx.unknown;
-                if ((transposed ? k : l) < first) continue;
-                addStiffnessBlock(fx.curl.data(), d.data(), P, mu * coeff.a, 1.0,
-                                  [&](int i, int j, double v) {
-                                      if (transposed)
-                                          columns(3 * l + j, 3 * (k - first) + i) += v;
-                                      else
-                                          columns(3 * k + i, 3 * (l - first) + j) += v;
-                                  });
+
+    // A cut that changed near a mouth changes the basis functions of unknowns assembled earlier
+    // (their pieces and plateau): everything from the first changed one on is assembled again, so
+    // that S stays the Galerkin matrix of one cut.
+    std::vector<std::uint64_t> fingerprints(total, 0);
+    for (const BasisElement& e : elements)
+        for (const Restriction& f : e.functions)
+            fingerprints[f.unknown] += fingerprintOf(e.panel.panel, f.values);
+    int kept = assembledUnknowns_;
+    for (int k = 0; k < assembledUnknowns_; ++k)
+        if (fingerprints[k] != fingerprints_[k]) {
+            kept = k;
+            break;
+        }
+    if (kept == total) return 0;
+    // Restored if the grown system turns out singular (update() leaves the system as it was).
+    struct Saved {
+        Eigen::MatrixXd C, D, denseSchur;
+        Eigen::MatrixXf G;
+        BorderedCholesky schur;
+        Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+        int assembled;
+    };
+    std::optional<Saved> saved;
+    std::swap(fingerprints_, fingerprints);  // the old ones now in `fingerprints`
+    if (kept < assembledUnknowns_) {
+        saved = Saved{C_, D_, denseSchur_, G_, schur_, lu_, assembledUnknowns_};
+        logf(LogLevel::Debug, "crack system: the mouth's cut changed; crack unknowns ", kept, " to ",
+             assembledUnknowns_ - 1, " are assembled again");
+        assembledUnknowns_ = kept;
+        C_.conservativeResize(Eigen::NoChange, 3 * kept);
+        G_.conservativeResize(3 * kept, Eigen::NoChange);
+        if (blocks_ == Blocks::Keep) D_.conservativeResize(3 * kept, 3 * kept);
+        schur_.truncate(3 * kept);
+        if (denseSchur_.size() > 0) {  // back to Cholesky if what is kept allows it
+            denseSchur_.conservativeResize(3 * kept, 3 * kept);
+            BorderedCholesky again;
+            if (again.extend(denseSchur_, 1e-15)) {
+                schur_ = std::move(again);
+                denseSchur_.resize(0, 0);
             }
         }
-    };
-    // The pairs' integrals in parallel, then their blocks added in pair order (deterministic).
-    std::vector<std::pair<int, int>> pairs;
-    const int count = static_cast<int>(elements.size());
-    for (int x = 0; x < count; ++x)
-        for (int y = x; y < count; ++y)
-            if (touchesFresh[x] || touchesFresh[y]) pairs.emplace_back(x, y);
-    std::vector<PairCoefficients> coeffs(pairs.size());
+    }
+    try {
+        std::vector<int> fresh(total - assembledUnknowns_);
+        for (int i = 0; i < static_cast<int>(fresh.size()); ++i) fresh[i] = assembledUnknowns_ + i;
+        const int old3 = 3 * assembledUnknowns_, new3 = 3 * total, added = new3 - old3;
+
+        // Surface-crack coupling for the new unknowns: new columns of C, new rows of G.
+        const CrackSurfaceCoupling coupling =
+            assembleCoupling(solver_, cracks_, fresh, CouplingBlocks::SurfaceAndLoad, cut);
+
+        // Crack-crack block D in the new unknowns' columns (their rows follow by symmetry).
+        Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(new3, added);
+        const double mu = solver_.material().shearModulus(), nu = solver_.material().poissonRatio();
+        const int first = assembledUnknowns_;
+        std::vector<char> touchesFresh(elements.size());
+        for (std::size_t e = 0; e < elements.size(); ++e)
+            touchesFresh[e] = std::any_of(elements[e].functions.begin(), elements[e].functions.end(),
+                                          [&](const Restriction& r) { return r.unknown >= first; });
+        // Each unordered pair once (bit-exact symmetry of D); its block and the transposed block,
+        // each entry kept where its column is a new unknown.
+        auto addBlock = [&](const BasisElement& x, const BasisElement& y, const PairCoefficients& coeff,
+                            bool transposed) {
+            for (const Restriction& fy : y.functions) {
+                const int l = fy.unknown;
+                const Eigen::Vector3d& d = fy.curl;
+                double P[9];
+                symTimesCross(coeff.L, d.data(), P);
+                for (const Restriction& fx : x.functions) {
+                    const int k = fx.unknown;
+                    if ((transposed ? k : l) < first) continue;
+                    addStiffnessBlock(fx.curl.data(), d.data(), P, mu * coeff.a, 1.0,
+                                      [&](int i, int j, double v) {
+                                          if (transposed)
+                                              columns(3 * l + j, 3 * (k - first) + i) += v;
+                                          else
+                                              columns(3 * k + i, 3 * (l - first) + j) += v;
+                                      });
+                }
+            }
+        };
+        // The pairs' integrals in parallel, then their blocks added in pair order (deterministic).
+        std::vector<std::pair<int, int>> pairs;
+        const int count = static_cast<int>(elements.size());
+        for (int x = 0; x < count; ++x)
+            for (int y = x; y < count; ++y)
+                if (touchesFresh[x] || touchesFresh[y]) pairs.emplace_back(x, y);
+        std::vector<PairCoefficients> coeffs(pairs.size());
 #pragma omp parallel for schedule(dynamic, 64)
-    for (int i = 0; i < static_cast<int>(pairs.size()); ++i)
-        coeffs[i] = coefficientsOf(
-            integratePair(elements[pairs[i].first].panel, elements[pairs[i].second].panel, q), mu, nu);
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
-        const auto [x, y] = pairs[i];
-        addBlock(elements[x], elements[y], coeffs[i], false);
-        if (y != x) addBlock(elements[x], elements[y], coeffs[i], true);
-    }
-    Eigen::MatrixXd newD;
-    if (blocks_ == Blocks::Keep) newD = columns;
+        for (int i = 0; i < static_cast<int>(pairs.size()); ++i)
+            coeffs[i] = coefficientsOf(
+                integratePair(elements[pairs[i].first].panel, elements[pairs[i].second].panel, q), mu, nu);
+        for (std::size_t i = 0; i < pairs.size(); ++i) {
+            const auto [x, y] = pairs[i];
+            addBlock(elements[x], elements[y], coeffs[i], false);
+            if (y != x) addBlock(elements[x], elements[y], coeffs[i], true);
+        }
+        Eigen::MatrixXd newD;
+        if (blocks_ == Blocks::Keep) newD = columns;
 
-    // Schur complement columns S(:, new) = D(:, new) - C^T K_R^-1 K^T C_new; the new rows are
-    // their transpose (S is factored as symmetric).
-    const Eigen::MatrixXd H = regularisedLoadSolve(coupling.C);
-    if (old3 > 0) columns.topRows(old3) -= transposedProduct(C_, H);
-    columns.bottomRows(added) -= transposedProduct(coupling.C, H);
-    bool dense = denseSchur_.size() > 0;
-    if (!dense && !schur_.extend(columns, 1e-15)) {
-        logf(LogLevel::Info, "crack system: the Schur complement of ", total,
-             " crack unknowns is not positive definite; factored by LU from here on");
-        dense = true;
-    }
-    if (dense) {
-        Eigen::MatrixXd grown(new3, new3);
-        grown.topLeftCorner(old3, old3) = denseSchur_.size() > 0 ? denseSchur_ : schur_.product();
-        grown.rightCols(added) = columns;
-        grown.bottomLeftCorner(added, old3) = columns.topRows(old3).transpose();
-        Eigen::PartialPivLU<Eigen::MatrixXd> lu(grown);
-        if (!(lu.rcond() > 1e-15))
-            throw Error("crack system: the Schur complement of " + std::to_string(total) +
-                        " crack unknowns is singular (reciprocal condition " + std::to_string(lu.rcond()) +
-                        "); the crack mesh is probably degenerate (slivers, overlapping sheets)");
-        denseSchur_ = std::move(grown);
-        lu_ = std::move(lu);
-        schur_ = BorderedCholesky();
-    }
+        // Schur complement columns S(:, new) = D(:, new) - C^T K_R^-1 K^T C_new; the new rows are
+        // their transpose (S is factored as symmetric).
+        const Eigen::MatrixXd H = regularisedLoadSolve(coupling.C);
+        if (old3 > 0) columns.topRows(old3) -= transposedProduct(C_, H);
+        columns.bottomRows(added) -= transposedProduct(coupling.C, H);
+        bool dense = denseSchur_.size() > 0;
+        if (!dense && !schur_.extend(columns, 1e-15)) {
+            logf(LogLevel::Info, "crack system: the Schur complement of ", total,
+                 " crack unknowns is not positive definite; factored by LU from here on");
+            dense = true;
+        }
+        if (dense) {
+            Eigen::MatrixXd grown(new3, new3);
+            grown.topLeftCorner(old3, old3) = denseSchur_.size() > 0 ? denseSchur_ : schur_.product();
+            grown.rightCols(added) = columns;
+            grown.bottomLeftCorner(added, old3) = columns.topRows(old3).transpose();
+            Eigen::PartialPivLU<Eigen::MatrixXd> lu(grown);
+            if (!(lu.rcond() > 1e-15))
+                throw Error("crack system: the Schur complement of " + std::to_string(total) +
+                            " crack unknowns is singular (reciprocal condition " +
+                            std::to_string(lu.rcond()) +
+                            "); the crack mesh is probably degenerate (slivers, overlapping sheets)");
+            denseSchur_ = std::move(grown);
+            lu_ = std::move(lu);
+            schur_ = BorderedCholesky();
+        }
 
-    C_.conservativeResize(Eigen::NoChange, new3);
-    C_.rightCols(added) = coupling.C;
-    G_.conservativeResize(new3, Eigen::NoChange);
-    G_.bottomRows(added) = coupling.G.cast<float>();
-    if (blocks_ == Blocks::Keep) {
-        D_.conservativeResize(new3, new3);
-        D_.rightCols(added) = newD;
-        D_.bottomLeftCorner(added, old3) = newD.topRows(old3).transpose();
+        C_.conservativeResize(Eigen::NoChange, new3);
+        C_.rightCols(added) = coupling.C;
+        G_.conservativeResize(new3, Eigen::NoChange);
+        G_.bottomRows(added) = coupling.G.cast<float>();
+        if (blocks_ == Blocks::Keep) {
+            D_.conservativeResize(new3, new3);
+            D_.rightCols(added) = newD;
+            D_.bottomLeftCorner(added, old3) = newD.topRows(old3).transpose();
+        }
+        assembledUnknowns_ = total;
+    } catch (const Error&) {
+        fingerprints_ = std::move(fingerprints);
+        if (saved) {
+            C_ = std::move(saved->C);
+            D_ = std::move(saved->D);
+            denseSchur_ = std::move(saved->denseSchur);
+            G_ = std::move(saved->G);
+            schur_ = std::move(saved->schur);
+            lu_ = std::move(saved->lu);
+            assembledUnknowns_ = saved->assembled;
+        }
+        throw;
     }
-    assembledUnknowns_ = total;
-    return static_cast<int>(fresh.size());
+    return total - before;
 }
 
 CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {

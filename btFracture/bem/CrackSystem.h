@@ -21,6 +21,9 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include <cstdint>
+#include <vector>
+
 namespace btfracture {
 
 class CrackSystem {
@@ -71,6 +74,7 @@ private:
     Eigen::MatrixXd denseSchur_;                                           // S in full, once Cholesky failed
     Eigen::PartialPivLU<Eigen::MatrixXd> lu_;                              // its LU
     int assembledUnknowns_ = 0;
+    std::vector<std::uint64_t> fingerprints_;  // per assembled unknown: its basis function's hash
     int unfollowedEdges_ = 0;  // the most mouth edges left out of a cut so far (logged when it grows)
 };
 

@@ -76,6 +76,28 @@ TEST(BorderedCholesky, RejectsABorderThatIsNotPositiveDefinite) {
     EXPECT_GT(g.diagonalRatio(), 1e-12);
 }
 
+// Truncated inside a block or at a block's edge, the factor is that of the leading block, and it
+// grows again from there like one grown to that size (the crack system assembles again from the
+// first unknown whose basis function changed).
+TEST(BorderedCholesky, TruncatedFactorIsTheLeadingBlocksAndGrowsAgain) {
+    const Eigen::MatrixXd s = spdMatrix(120);
+    for (int rows : {0, 33, 50, 97}) {
+        BorderedCholesky f = grown(s, {33, 64, 23});
+        f.truncate(rows);
+        ASSERT_EQ(f.size(), rows);
+        if (rows > 0) {
+            const Eigen::MatrixXd lead = s.topLeftCorner(rows, rows);
+            EXPECT_LT((f.product() - lead).cwiseAbs().maxCoeff(), 1e-12 * s.cwiseAbs().maxCoeff()) << rows;
+        }
+        EXPECT_TRUE(f.extend(s.block(0, rows, 120, 120 - rows))) << rows;
+        Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(120, -1.0, 2.0);
+        const Eigen::VectorXd b = x;
+        f.solveInPlace(x);
+        EXPECT_LT((s * x - b).norm(), 1e-12 * b.norm() * s.norm()) << rows;
+        EXPECT_GT(f.diagonalRatio(), 0.0) << rows;
+    }
+}
+
 TEST(BorderedCholesky, SameBitsOnAnyThreadCount) {
     const Eigen::MatrixXd s = spdMatrix(300);
     auto solve = [&](int threads) {
