@@ -28,6 +28,28 @@ SurfaceCrackResult solve(const SurfaceCrackCase& c) {
     return r;
 }
 
+// The a/b = 0.2 edge crack, 4 elements along the depth, in a FULL solver set to grow it under the
+// same tension (tiny toughness, full-length steps, crack elements of the surface's size), its
+// event begun.
+struct GrowingEdgeCrack {
+    static FractureSettings settings(const SurfaceCrackCase& c) {
+        FractureSettings fs = growthSettings(FractureMethod::Full);
+        fs.crackElementSize = c.along[1] - c.along[0];
+        return fs;
+    }
+    GrowingEdgeCrack() {
+        addSurfaceCrackSheet(fracture.cracks(), c, solver.mesh());
+        fracture.beginEvent(tractions);
+    }
+    const SurfaceCrackCase c = edgeCrackCase(0.2, 4);
+    const ElasticSolver solver{SurfaceMesh(c.body), kMaterial};
+    const Eigen::VectorXd tractions = c.tractions(solver.mesh());
+    FractureSolver fracture{solver,
+                            MaterialField(Material(kMaterial.youngsModulus(), kMaterial.poissonRatio(),
+                                                   kMaterial.density(), 1e7, 1e3, 2.0, "growing")),
+                            settings(c)};
+};
+
 }  // namespace
 
 // Through edge crack, 4 elements along the depth, plate as thick as wide. FULL: measured +0.3 %
@@ -92,15 +114,10 @@ TEST(SurfaceCrack, MouthOpensInsideSurfaceTriangles) {
 // +0.3, +2.0, -3.4, -3.1, -3.4, -2.8 %; with the ends held just inside the faces it fell to
 // -8.2 %), and the mouth grows along the faces.
 TEST(SurfaceCrack, GrownFrontEndsOpenOnTheFaces) {
-    const SurfaceCrackCase c = edgeCrackCase(0.2, 4);
-    const ElasticSolver solver{SurfaceMesh(c.body), kMaterial};
-    const Material growing(kMaterial.youngsModulus(), kMaterial.poissonRatio(), kMaterial.density(), 1e7, 1e3,
-                           2.0, "growing");
-    FractureSettings fs = growthSettings(FractureMethod::Full);
-    fs.crackElementSize = c.along[1] - c.along[0];
-    FractureSolver fracture(solver, MaterialField(growing), fs);
-    addSurfaceCrackSheet(fracture.cracks(), c, solver.mesh());
-    fracture.beginEvent(c.tractions(solver.mesh()));
+    GrowingEdgeCrack edge;
+    const SurfaceCrackCase& c = edge.c;
+    const ElasticSolver& solver = edge.solver;
+    FractureSolver& fracture = edge.fracture;
     auto mouthNodes = [&] {
         int mouth = 0;
         for (int i = 0; i < fracture.cracks().nodeCount(); ++i) mouth += fracture.cracks().isMouth(i);
@@ -131,16 +148,10 @@ TEST(SurfaceCrack, GrownFrontEndsOpenOnTheFaces) {
 // symmetric to ~1e-6, G is held in single precision; measured 1.4e-6, and 2.0e-4 when older
 // columns kept their old cut).
 TEST(SurfaceCrack, GrowingMouthKeepsTheSystemOfOneCut) {
-    const SurfaceCrackCase c = edgeCrackCase(0.2, 4);
-    const ElasticSolver solver{SurfaceMesh(c.body), kMaterial};
-    const Material growing(kMaterial.youngsModulus(), kMaterial.poissonRatio(), kMaterial.density(), 1e7, 1e3,
-                           2.0, "growing");
-    FractureSettings fs = growthSettings(FractureMethod::Full);
-    fs.crackElementSize = c.along[1] - c.along[0];
-    FractureSolver fracture(solver, MaterialField(growing), fs);
-    addSurfaceCrackSheet(fracture.cracks(), c, solver.mesh());
-    const Eigen::VectorXd q = c.tractions(solver.mesh());
-    fracture.beginEvent(q);
+    GrowingEdgeCrack edge;
+    const ElasticSolver& solver = edge.solver;
+    FractureSolver& fracture = edge.fracture;
+    const Eigen::VectorXd& q = edge.tractions;
     CrackSystem grown(solver, fracture.cracks());
     grown.update();
     for (int step = 0; step < 5; ++step) {
