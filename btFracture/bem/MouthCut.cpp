@@ -130,6 +130,15 @@ Panel panelOfCorners(const LocalMesh& local, const std::array<int, 3>& c, const 
     return p;
 }
 
+// A piece with (numerically) no area: a cut point that fell on a corner. It adds nothing to any
+// integral, and its hats' gradients would divide by zero.
+bool hasNoArea(const Panel& p) {
+    double longest = 0.0;
+    for (int k = 0; k < 3; ++k)
+        longest = std::max(longest, (p.corners[(k + 1) % 3] - p.corners[k]).squaredNorm());
+    return !(p.area > 1e-12 * longest);
+}
+
 }  // namespace
 
 int mouthIdOf(const SurfaceMesh& mesh, const CrackMesh& cracks, int crackNode) {
@@ -522,6 +531,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
         for (int v : t.corners) weighted |= cornerWeights(v) != nullptr;
         if (!weighted && pieceCount[t.owner] == 1) continue;
         MouthPiece piece{panelOfCorners(local, t.corners, mesh.normal(t.owner)), {}};
+        if (hasNoArea(piece.panel)) continue;
         piece.panel.normal = mesh.normal(t.owner);
         for (int k = 0; k < 3; ++k)
             if (const MouthWeights* w = cornerWeights(t.corners[k]))
@@ -574,6 +584,7 @@ MouthCut cutAlongMouths(const SurfaceMesh& mesh, const CrackMesh& cracks) {
     for (const auto& [t, split] : crackSplits)
         for (const auto& piece : split.triangles) {
             MouthPiece p{panelOfCorners(split, piece.corners, -cracks.normal(t)), {}};
+            if (hasNoArea(p.panel)) continue;
             for (int k = 0; k < 3; ++k) p.weights[k] = split.vertices[piece.corners[k]].weights;
             out.crackPieces[t].push_back(std::move(p));
         }

@@ -4,6 +4,7 @@
 // gives the embedded crack's estimate there.
 #include <btFracture/bem/CrackSystem.h>
 #include <btFracture/bem/ElasticSolver.h>
+#include <btFracture/bem/MouthCut.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/fracture/FractureSolver.h>
 #include <btFracture/fracture/ReferenceCracks.h>
@@ -268,4 +269,38 @@ TEST(SurfaceCrack, CrossingMouthsLeaveRigidMotionsFree) {
     EXPECT_EQ(mouthUnknowns, 2 * 5);  // the mouths' nodes but the front ends
     EXPECT_LT(interior, 1e-3);
     EXPECT_LT(mouth, 1e-3);
+}
+
+// A crack triangle lying flat on a face (all three corners on the surface, as front ends sliding
+// along a thin plate's faces lay them): the cut path of its long mouth edge passes through its
+// middle corner, so the edge is split at that corner's point and one piece has no area (its hats'
+// gradients were NaN, S singular). Such pieces are dropped: every piece keeps an area, the blocks
+// stay finite.
+TEST(SurfaceCrack, FlatTriangleOnAFaceKeepsTheSystemFinite) {
+    const ElasticSolver solver(SurfaceMesh(makeBox({0.05, 0.05, 0.05}, 6, 6, 6)), kMaterial);
+    const Eigen::Vector3d top = Eigen::Vector3d(0.0, 0.0, 0.05) - solver.mesh().offset();
+    CrackMesh cracks;
+    addRectangularSheet(cracks, top + Eigen::Vector3d(0.0071, 0.0, 0.0), -Eigen::Vector3d::UnitZ(),
+                        Eigen::Vector3d::UnitY(), 0.03, 0.015, 3);
+    const int a = 3, d = 4;  // mouth nodes at y = 0 and 0.005 (row 0 of the 7-node rows)
+    const Eigen::Vector3d far = cracks.node(a) + 2.0 * (cracks.node(d) - cracks.node(a));
+    const int p = cracks.addNode(far + Eigen::Vector3d(0.0002, 0.0, 0.0));
+    cracks.addTriangle(a, d, p);
+    cracks.refreshUnknowns(solver.mesh());
+    const MouthCut cut = cutAlongMouths(solver.mesh(), cracks);
+    int pieces = 0;
+    double smallest = 1.0;
+    for (const auto* all : {&cut.surfacePieces, &cut.crackPieces})
+        for (const auto& [triangle, list] : *all)
+            for (const MouthPiece& piece : list) {
+                smallest = std::min(smallest, piece.panel.area);
+                ++pieces;
+            }
+    CrackSystem system(solver, cracks, CrackSystem::Blocks::Keep);
+    system.update();
+    std::printf("flat mouth triangle: %d pieces, smallest %.3e m^2, %d crack unknowns\n", pieces, smallest,
+                cracks.unknownCount());
+    EXPECT_GT(smallest, 1e-9);
+    EXPECT_TRUE(system.surfaceCrackBlock().allFinite());
+    EXPECT_TRUE(system.crackCrackBlock().allFinite());
 }
