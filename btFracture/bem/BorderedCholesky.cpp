@@ -87,6 +87,20 @@ Eigen::MatrixXd BorderedCholesky::product() const {
     return transposedProduct(L.transpose(), L.transpose());
 }
 
+Eigen::MatrixXd BorderedCholesky::productColumns(int first, int count) const {
+    // S(:, J) = L L(J, :)^T with J = first .. first + count.
+    Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(count, size_);
+    for (const Panel& p : panels_) {
+        const int h = static_cast<int>(p.L.rows());
+        const int lo = std::max(first, p.row0), hi = std::min(first + count, p.row0 + h);
+        if (lo < hi) rows.block(lo - first, 0, hi - lo, p.L.cols()) = p.L.middleRows(lo - p.row0, hi - lo);
+    }
+    Eigen::MatrixXd out(size_, count);
+    for (const Panel& p : panels_)
+        out.middleRows(p.row0, p.L.rows()).noalias() = p.L * rows.leftCols(p.L.cols()).transpose();
+    return out;
+}
+
 std::size_t BorderedCholesky::bytes() const {
     std::size_t out = 0;
     for (const Panel& p : panels_) out += sizeof(double) * p.L.size();

@@ -37,6 +37,8 @@ public:
     double diagonalRatio() const;
     // S = L L^T as a dense matrix (size() x size()).
     Eigen::MatrixXd product() const;
+    // Columns first .. first + count of S (size() x count).
+    Eigen::MatrixXd productColumns(int first, int count) const;
     std::size_t bytes() const;
 
 private:

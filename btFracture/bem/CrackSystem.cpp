@@ -16,6 +16,7 @@
 #include <cstring>
 #include <map>
 #include <optional>
+#include <sstream>
 
 namespace btfracture {
 namespace {
@@ -67,6 +68,12 @@ BasisElement pieceElement(const MouthPiece& piece, const CrackMesh& cracks, cons
         }
     for (Restriction& r : e.functions) r.curl = pieceCurl(piece.panel, r.values);
     return e;
+}
+
+std::string scientific(double x) {
+    std::ostringstream out;
+    out << x;
+    return out.str();
 }
 
 // A hash of a basis function's restriction to one element (corners and values, bit for bit).
@@ -266,66 +273,58 @@ int CrackSystem::update() {
     const std::vector<BasisElement> elements = basisElements(solver_.mesh(), cracks_, all, cut, q);
 
     // A cut that changed near a mouth changes the basis functions of unknowns assembled earlier
-    // (their pieces and plateau): everything from the first changed one on is assembled again, so
-    // that S stays the Galerkin matrix of one cut.
+    // (their pieces and plateau): those are assembled again with the new ones, so that S stays the
+    // Galerkin matrix of one cut; every other entry keeps its value.
     std::vector<std::uint64_t> fingerprints(total, 0);
     for (const BasisElement& e : elements)
         for (const Restriction& f : e.functions)
             fingerprints[f.unknown] += fingerprintOf(e.panel.panel, f.values);
-    int kept = assembledUnknowns_;
+    std::vector<int> redo;  // changed unknowns, then the new ones
     for (int k = 0; k < assembledUnknowns_; ++k)
-        if (fingerprints[k] != fingerprints_[k]) {
-            kept = k;
-            break;
-        }
-    if (kept == total) return 0;
-    // Restored if the grown system turns out singular (update() leaves the system as it was).
-    struct Saved {
-        Eigen::MatrixXd C, D, denseSchur;
-        Eigen::MatrixXf G;
-        BorderedCholesky schur;
-        Eigen::PartialPivLU<Eigen::MatrixXd> lu;
-        int assembled;
-    };
-    std::optional<Saved> saved;
-    std::swap(fingerprints_, fingerprints);  // the old ones now in `fingerprints`
-    if (kept < assembledUnknowns_) {
-        saved = Saved{C_, D_, denseSchur_, G_, schur_, lu_, assembledUnknowns_};
-        logf(LogLevel::Debug, "crack system: the mouth's cut changed; crack unknowns ", kept, " to ",
-             assembledUnknowns_ - 1, " are assembled again");
-        assembledUnknowns_ = kept;
-        C_.conservativeResize(Eigen::NoChange, 3 * kept);
-        G_.conservativeResize(3 * kept, Eigen::NoChange);
-        if (blocks_ == Blocks::Keep) D_.conservativeResize(3 * kept, 3 * kept);
-        schur_.truncate(3 * kept);
-        if (denseSchur_.size() > 0) {  // back to Cholesky if what is kept allows it
-            denseSchur_.conservativeResize(3 * kept, 3 * kept);
-            BorderedCholesky again;
-            if (again.extend(denseSchur_, 1e-15)) {
-                schur_ = std::move(again);
-                denseSchur_.resize(0, 0);
-            }
-        }
+        if (fingerprints[k] != fingerprints_[k]) redo.push_back(k);
+    const int changed = static_cast<int>(redo.size());
+    for (int k = assembledUnknowns_; k < total; ++k) redo.push_back(k);
+    if (redo.empty()) return 0;
+    std::vector<int> position(total, -1);  // unknown -> its index in redo
+    for (int i = 0; i < static_cast<int>(redo.size()); ++i) position[redo[i]] = i;
+    // The factor's order: unknowns at slots before the first changed one keep their factor; the
+    // rest are factored again, unchanged ones first, changed and new ones last (mouth unknowns,
+    // which change most, drift to the end, where refactoring is cheap).
+    int first = assembledUnknowns_;
+    for (int i = 0; i < changed; ++i) first = std::min(first, slotOf_[redo[i]]);
+    std::vector<int> slots(slots_.begin(), slots_.begin() + first);
+    for (int s = first; s < assembledUnknowns_; ++s)
+        if (position[slots_[s]] < 0) slots.push_back(slots_[s]);
+    slots.insert(slots.end(), redo.begin(), redo.end());
+    if (changed > 0)
+        logf(LogLevel::Debug, "crack system: the mouth's cut changed ", changed, " crack unknowns; ",
+             assembledUnknowns_ - first, " of ", assembledUnknowns_, " are factored again");
+
+    // The changed unknowns' old columns, restored if the grown system turns out singular.
+    Eigen::MatrixXd savedC(C_.rows(), 3 * changed), savedD;
+    Eigen::MatrixXf savedG(3 * changed, G_.cols());
+    if (blocks_ == Blocks::Keep) savedD.resize(D_.rows(), 3 * changed);
+    for (int i = 0; i < changed; ++i) {
+        savedC.middleCols(3 * i, 3) = C_.middleCols(3 * redo[i], 3);
+        savedG.middleRows(3 * i, 3) = G_.middleRows(3 * redo[i], 3);
+        if (blocks_ == Blocks::Keep) savedD.middleCols(3 * i, 3) = D_.middleCols(3 * redo[i], 3);
     }
     try {
-        std::vector<int> fresh(total - assembledUnknowns_);
-        for (int i = 0; i < static_cast<int>(fresh.size()); ++i) fresh[i] = assembledUnknowns_ + i;
-        const int old3 = 3 * assembledUnknowns_, new3 = 3 * total, added = new3 - old3;
+        const int old3 = 3 * assembledUnknowns_, new3 = 3 * total, redo3 = 3 * static_cast<int>(redo.size());
 
-        // Surface-crack coupling for the new unknowns: new columns of C, new rows of G.
+        // Surface-crack coupling of the redone unknowns: their columns of C, rows of G.
         const CrackSurfaceCoupling coupling =
-            assembleCoupling(solver_, cracks_, fresh, CouplingBlocks::SurfaceAndLoad, cut);
+            assembleCoupling(solver_, cracks_, redo, CouplingBlocks::SurfaceAndLoad, cut);
 
-        // Crack-crack block D in the new unknowns' columns (their rows follow by symmetry).
-        Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(new3, added);
+        // Crack-crack block D in the redone unknowns' columns (their rows follow by symmetry).
+        Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(new3, redo3);
         const double mu = solver_.material().shearModulus(), nu = solver_.material().poissonRatio();
-        const int first = assembledUnknowns_;
-        std::vector<char> touchesFresh(elements.size());
+        std::vector<char> touchesRedo(elements.size());
         for (std::size_t e = 0; e < elements.size(); ++e)
-            touchesFresh[e] = std::any_of(elements[e].functions.begin(), elements[e].functions.end(),
-                                          [&](const Restriction& r) { return r.unknown >= first; });
+            touchesRedo[e] = std::any_of(elements[e].functions.begin(), elements[e].functions.end(),
+                                         [&](const Restriction& r) { return position[r.unknown] >= 0; });
         // Each unordered pair once (bit-exact symmetry of D); its block and the transposed block,
-        // each entry kept where its column is a new unknown.
+        // each entry kept where its column is a redone unknown.
         auto addBlock = [&](const BasisElement& x, const BasisElement& y, const PairCoefficients& coeff,
                             bool transposed) {
             for (const Restriction& fy : y.functions) {
@@ -335,13 +334,14 @@ int CrackSystem::update() {
                 symTimesCross(coeff.L, d.data(), P);
                 for (const Restriction& fx : x.functions) {
                     const int k = fx.unknown;
-                    if ((transposed ? k : l) < first) continue;
+                    const int column = position[transposed ? k : l];
+                    if (column < 0) continue;
                     addStiffnessBlock(fx.curl.data(), d.data(), P, mu * coeff.a, 1.0,
                                       [&](int i, int j, double v) {
                                           if (transposed)
-                                              columns(3 * l + j, 3 * (k - first) + i) += v;
+                                              columns(3 * l + j, 3 * column + i) += v;
                                           else
-                                              columns(3 * k + i, 3 * (l - first) + j) += v;
+                                              columns(3 * k + i, 3 * column + j) += v;
                                       });
                 }
             }
@@ -351,7 +351,7 @@ int CrackSystem::update() {
         const int count = static_cast<int>(elements.size());
         for (int x = 0; x < count; ++x)
             for (int y = x; y < count; ++y)
-                if (touchesFresh[x] || touchesFresh[y]) pairs.emplace_back(x, y);
+                if (touchesRedo[x] || touchesRedo[y]) pairs.emplace_back(x, y);
         std::vector<PairCoefficients> coeffs(pairs.size());
 #pragma omp parallel for schedule(dynamic, 64)
         for (int i = 0; i < static_cast<int>(pairs.size()); ++i)
@@ -362,57 +362,97 @@ int CrackSystem::update() {
             addBlock(elements[x], elements[y], coeffs[i], false);
             if (y != x) addBlock(elements[x], elements[y], coeffs[i], true);
         }
-        Eigen::MatrixXd newD;
-        if (blocks_ == Blocks::Keep) newD = columns;
 
-        // Schur complement columns S(:, new) = D(:, new) - C^T K_R^-1 K^T C_new; the new rows are
-        // their transpose (S is factored as symmetric).
-        const Eigen::MatrixXd H = regularisedLoadSolve(coupling.C);
-        if (old3 > 0) columns.topRows(old3) -= transposedProduct(C_, H);
-        columns.bottomRows(added) -= transposedProduct(coupling.C, H);
-        bool dense = denseSchur_.size() > 0;
-        if (!dense && !schur_.extend(columns, 1e-15)) {
+        // The blocks in unknown order, the redone unknowns' columns (and rows of G, D) replaced.
+        C_.conservativeResize(Eigen::NoChange, new3);
+        G_.conservativeResize(new3, Eigen::NoChange);
+        if (blocks_ == Blocks::Keep) D_.conservativeResize(new3, new3);
+        for (int i = 0; i < static_cast<int>(redo.size()); ++i) {
+            const int at = 3 * redo[i];
+            C_.middleCols(at, 3) = coupling.C.middleCols(3 * i, 3);
+            G_.middleRows(at, 3) = coupling.G.middleRows(3 * i, 3).cast<float>();
+            if (blocks_ == Blocks::Keep) {
+                D_.middleCols(at, 3) = columns.middleCols(3 * i, 3);
+                D_.middleRows(at, 3) = columns.middleCols(3 * i, 3).transpose();
+            }
+        }
+
+        // Schur complement columns S(:, redo) = D(:, redo) - C^T K_R^-1 K^T C_redo (unknown order).
+        columns -= transposedProduct(C_, regularisedLoadSolve(coupling.C));
+
+        // S in the factor's new order from slot `first` on: redone entries from `columns` (rows of
+        // a redone unknown by symmetry), the others from the old S.
+        const int first3 = 3 * first, width = new3 - first3;
+        const bool wasDense = denseSchur_.size() > 0;
+        const Eigen::MatrixXd oldColumns = wasDense ? Eigen::MatrixXd(denseSchur_.rightCols(old3 - first3))
+                                                    : schur_.productColumns(first3, old3 - first3);
+        Eigen::MatrixXd tail(new3, width);
+        for (int c = first; c < total; ++c) {
+            const int v = slots[c], pv = position[v];
+            for (int r = 0; r < total; ++r) {
+                const int u = slots[r], pu = position[u];
+                auto block = tail.block<3, 3>(3 * r, 3 * (c - first));
+                if (pv >= 0)
+                    block = columns.block<3, 3>(3 * u, 3 * pv);
+                else if (pu >= 0)
+                    block = columns.block<3, 3>(3 * v, 3 * pu).transpose();
+                else
+                    block = oldColumns.block<3, 3>(3 * slotOf_[u], 3 * (slotOf_[v] - first));
+            }
+        }
+        Eigen::MatrixXd head;  // S of the kept slots, where the factor is dense
+        if (wasDense) head = denseSchur_.topLeftCorner(first3, first3);
+        std::optional<BorderedCholesky> copy;  // the factor is left as it was if this throws
+        if (first3 < schur_.size() || (wasDense && changed > 0)) copy = schur_;
+        BorderedCholesky& factor = copy ? *copy : schur_;
+        factor.truncate(first3);
+        bool dense = wasDense;
+        // Back to Cholesky after a change if the kept part allows it.
+        if (dense && changed > 0 && factor.extend(head, 1e-15)) dense = false;
+        if (!dense && !factor.extend(tail, 1e-15)) {
             logf(LogLevel::Info, "crack system: the Schur complement of ", total,
                  " crack unknowns is not positive definite; factored by LU from here on");
+            if (!wasDense) head = factor.product();
             dense = true;
         }
         if (dense) {
             Eigen::MatrixXd grown(new3, new3);
-            grown.topLeftCorner(old3, old3) = denseSchur_.size() > 0 ? denseSchur_ : schur_.product();
-            grown.rightCols(added) = columns;
-            grown.bottomLeftCorner(added, old3) = columns.topRows(old3).transpose();
+            grown.topLeftCorner(first3, first3) = head;
+            grown.rightCols(width) = tail;
+            grown.bottomLeftCorner(width, first3) = tail.topRows(first3).transpose();
+            const Eigen::MatrixXd lower = tail.bottomRows(width).triangularView<Eigen::Lower>();
+            grown.bottomRightCorner(width, width) = lower + lower.transpose();
+            grown.bottomRightCorner(width, width).diagonal() *= 0.5;
             Eigen::PartialPivLU<Eigen::MatrixXd> lu(grown);
             if (!(lu.rcond() > 1e-15))
                 throw Error("crack system: the Schur complement of " + std::to_string(total) +
-                            " crack unknowns is singular (reciprocal condition " +
-                            std::to_string(lu.rcond()) +
+                            " crack unknowns is singular (reciprocal condition " + scientific(lu.rcond()) +
                             "); the crack mesh is probably degenerate (slivers, overlapping sheets)");
             denseSchur_ = std::move(grown);
             lu_ = std::move(lu);
             schur_ = BorderedCholesky();
+        } else {
+            if (copy) schur_ = std::move(*copy);
+            denseSchur_.resize(0, 0);
+            lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>();
         }
-
-        C_.conservativeResize(Eigen::NoChange, new3);
-        C_.rightCols(added) = coupling.C;
-        G_.conservativeResize(new3, Eigen::NoChange);
-        G_.bottomRows(added) = coupling.G.cast<float>();
-        if (blocks_ == Blocks::Keep) {
-            D_.conservativeResize(new3, new3);
-            D_.rightCols(added) = newD;
-            D_.bottomLeftCorner(added, old3) = newD.topRows(old3).transpose();
-        }
+        slots_ = std::move(slots);
+        slotOf_.assign(total, -1);
+        for (int s = 0; s < total; ++s) slotOf_[slots_[s]] = s;
+        fingerprints_ = std::move(fingerprints);
         assembledUnknowns_ = total;
     } catch (const Error&) {
-        fingerprints_ = std::move(fingerprints);
-        if (saved) {
-            C_ = std::move(saved->C);
-            D_ = std::move(saved->D);
-            denseSchur_ = std::move(saved->denseSchur);
-            G_ = std::move(saved->G);
-            schur_ = std::move(saved->schur);
-            lu_ = std::move(saved->lu);
-            assembledUnknowns_ = saved->assembled;
+        for (int i = 0; i < changed; ++i) {
+            C_.middleCols(3 * redo[i], 3) = savedC.middleCols(3 * i, 3);
+            G_.middleRows(3 * redo[i], 3) = savedG.middleRows(3 * i, 3);
+            if (blocks_ == Blocks::Keep) {
+                D_.middleCols(3 * redo[i], 3) = savedD.middleCols(3 * i, 3);
+                D_.middleRows(3 * redo[i], 3) = savedD.middleCols(3 * i, 3).transpose();
+            }
         }
+        C_.conservativeResize(Eigen::NoChange, 3 * assembledUnknowns_);
+        G_.conservativeResize(3 * assembledUnknowns_, Eigen::NoChange);
+        if (blocks_ == Blocks::Keep) D_.conservativeResize(3 * assembledUnknowns_, 3 * assembledUnknowns_);
         throw;
     }
     return total - before;
@@ -426,17 +466,24 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {
         s.openings.resize(0);
         return s;
     }
-    s.openings = loadOnCracks(q) - C_.transpose() * b;
+    const Eigen::VectorXd rhs = loadOnCracks(q) - C_.transpose() * b;
+    Eigen::VectorXd x(rhs.size());  // in the factor's order
+    for (int k = 0; k < assembledUnknowns_; ++k) x.segment<3>(3 * k) = rhs.segment<3>(3 * slots_[k]);
     if (denseSchur_.size() > 0) {
-        const Eigen::VectorXd rhs = s.openings;
-        s.openings = lu_.solve(rhs);
-        const double residual = (denseSchur_ * s.openings - rhs).norm() / std::max(rhs.norm(), 1e-300);
-        if (!(residual <= 1e-8))
-            throw Error("crack system: Schur complement solve failed (relative residual " +
-                        std::to_string(residual) + "); the crack mesh is probably degenerate");
+        const Eigen::VectorXd ordered = x;
+        x = lu_.solve(ordered);
+        // Normwise backward error: LU is backward stable, so only a broken solve exceeds it (the
+        // residual relative to the load alone grows with S's condition near separation).
+        const double residual = (denseSchur_ * x - ordered).norm() /
+                                std::max(denseSchur_.norm() * x.norm() + ordered.norm(), 1e-300);
+        if (!(residual <= 1e-10))
+            throw Error("crack system: Schur complement solve failed (backward error " +
+                        scientific(residual) + "); the crack mesh is probably degenerate");
     } else {
-        schur_.solveInPlace(s.openings);
+        schur_.solveInPlace(x);
     }
+    s.openings.resize(rhs.size());
+    for (int k = 0; k < assembledUnknowns_; ++k) s.openings.segment<3>(3 * slots_[k]) = x.segment<3>(3 * k);
     if (!s.openings.allFinite())
         throw Error(
             "crack system: the Schur complement solve gave NaN or Inf; the crack mesh is probably "

@@ -11,7 +11,8 @@
 // positive definite up to rounding (and up to the rigid modes' residue in K, 1e-6 of S near
 // crack mouths) and is factored by Cholesky as symmetric, from its columns S(:, new) = D(:, new) -
 // C^T K_R^-1 K^T C_new. When a crack grows, only the new unknowns' columns are computed and the
-// factor is extended by bordering (BorderedCholesky): D is folded into it and freed. A system
+// factor is extended by bordering (BorderedCholesky): D is folded into it and freed. Unknowns
+// whose basis function a changed mouth cut alters are assembled again and refactored last. A system
 // whose S is not numerically positive definite (carried cracks that leave a fragment's surface)
 // is factored by LU from then on, S held in full and refactored when it grows (logged).
 #include <btFracture/bem/BorderedCholesky.h>
@@ -74,6 +75,8 @@ private:
     Eigen::MatrixXd denseSchur_;                                           // S in full, once Cholesky failed
     Eigen::PartialPivLU<Eigen::MatrixXd> lu_;                              // its LU
     int assembledUnknowns_ = 0;
+    // The factor's order (slot -> crack unknown) and its inverse: C, D and G are in unknown order.
+    std::vector<int> slots_, slotOf_;
     std::vector<std::uint64_t> fingerprints_;  // per assembled unknown: its basis function's hash
     int unfollowedEdges_ = 0;  // the most mouth edges left out of a cut so far (logged when it grows)
 };

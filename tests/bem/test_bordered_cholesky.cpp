@@ -55,6 +55,10 @@ TEST(BorderedCholesky, GrownInBlocksSolvesLikeOneFactorisation) {
         for (int h : sizes) entries += h * (row0 += h);
         EXPECT_EQ(f.bytes(), sizeof(double) * entries);
         EXPECT_LT((f.product() - s).cwiseAbs().maxCoeff(), 1e-12 * s.cwiseAbs().maxCoeff());
+        // Columns of S from the factor, across and inside the extensions' panels.
+        for (const auto& [first, count] : {std::pair{0, 150}, {20, 45}, {149, 1}})
+            EXPECT_LT((f.productColumns(first, count) - s.middleCols(first, count)).cwiseAbs().maxCoeff(),
+                      1e-12 * s.cwiseAbs().maxCoeff());
     }
 }
 
@@ -77,8 +81,8 @@ TEST(BorderedCholesky, RejectsABorderThatIsNotPositiveDefinite) {
 }
 
 // Truncated inside a block or at a block's edge, the factor is that of the leading block, and it
-// grows again from there like one grown to that size (the crack system assembles again from the
-// first unknown whose basis function changed).
+// grows again from there like one grown to that size (the crack system refactors from the first
+// slot whose unknown's basis function changed).
 TEST(BorderedCholesky, TruncatedFactorIsTheLeadingBlocksAndGrowsAgain) {
     const Eigen::MatrixXd s = spdMatrix(120);
     for (int rows : {0, 33, 50, 97}) {
