@@ -410,8 +410,9 @@ int CrackSystem::update() {
         // Back to Cholesky after a change if the kept part allows it.
         if (dense && changed > 0 && factor.extend(head, 1e-15)) dense = false;
         if (!dense && !factor.extend(tail, 1e-15)) {
-            logf(LogLevel::Info, "crack system: the Schur complement of ", total,
-                 " crack unknowns is not positive definite; factored by LU from here on");
+            logf(luLogged_ ? LogLevel::Debug : LogLevel::Info, "crack system: the Schur complement of ",
+                 total, " crack unknowns is not positive definite; factored by LU from here on");
+            luLogged_ = true;
             if (!wasDense) head = factor.product();
             dense = true;
         }

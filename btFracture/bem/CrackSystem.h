@@ -78,6 +78,7 @@ private:
     // The factor's order (slot -> crack unknown) and its inverse: C, D and G are in unknown order.
     std::vector<int> slots_, slotOf_;
     std::vector<std::uint64_t> fingerprints_;  // per assembled unknown: its basis function's hash
+    bool luLogged_ = false;                    // the LU fallback is logged as info once, then as debug
     int unfollowedEdges_ = 0;  // the most mouth edges left out of a cut so far (logged when it grows)
 };
 
