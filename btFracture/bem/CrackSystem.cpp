@@ -384,8 +384,11 @@ int CrackSystem::update() {
         // a redone unknown by symmetry), the others from the old S.
         const int first3 = 3 * first, width = new3 - first3;
         const bool wasDense = denseSchur_.size() > 0;
-        const Eigen::MatrixXd oldColumns = wasDense ? Eigen::MatrixXd(denseSchur_.rightCols(old3 - first3))
-                                                    : schur_.productColumns(first3, old3 - first3);
+        const Eigen::MatrixXd fromFactor =
+            wasDense ? Eigen::MatrixXd() : schur_.productColumns(first3, old3 - first3);
+        const Eigen::Ref<const Eigen::MatrixXd> oldColumns =
+            wasDense ? Eigen::Ref<const Eigen::MatrixXd>(denseSchur_.rightCols(old3 - first3))
+                     : Eigen::Ref<const Eigen::MatrixXd>(fromFactor);
         Eigen::MatrixXd tail(new3, width);
         for (int c = first; c < total; ++c) {
             const int v = slots[c], pv = position[v];
@@ -400,15 +403,16 @@ int CrackSystem::update() {
                     block = oldColumns.block<3, 3>(3 * slotOf_[u], 3 * (slotOf_[v] - first));
             }
         }
-        Eigen::MatrixXd head;  // S of the kept slots, where the factor is dense
-        if (wasDense) head = denseSchur_.topLeftCorner(first3, first3);
+        columns.resize(0, 0);
+        Eigen::MatrixXd head;                  // S of the kept slots from the factor, once Cholesky fails
         std::optional<BorderedCholesky> copy;  // the factor is left as it was if this throws
         if (first3 < schur_.size() || (wasDense && changed > 0)) copy = schur_;
         BorderedCholesky& factor = copy ? *copy : schur_;
         factor.truncate(first3);
         bool dense = wasDense;
         // Back to Cholesky after a change if the kept part allows it.
-        if (dense && changed > 0 && factor.extend(head, 1e-15)) dense = false;
+        if (dense && changed > 0 && factor.extend(denseSchur_.topLeftCorner(first3, first3), 1e-15))
+            dense = false;
         if (!dense && !factor.extend(tail, 1e-15)) {
             logf(luLogged_ ? LogLevel::Debug : LogLevel::Info, "crack system: the Schur complement of ",
                  total, " crack unknowns is not positive definite; factored by LU from here on");
@@ -418,12 +422,11 @@ int CrackSystem::update() {
         }
         if (dense) {
             Eigen::MatrixXd grown(new3, new3);
-            grown.topLeftCorner(first3, first3) = head;
+            grown.topLeftCorner(first3, first3) = wasDense ? denseSchur_.topLeftCorner(first3, first3) : head;
             grown.rightCols(width) = tail;
             grown.bottomLeftCorner(width, first3) = tail.topRows(first3).transpose();
-            const Eigen::MatrixXd lower = tail.bottomRows(width).triangularView<Eigen::Lower>();
-            grown.bottomRightCorner(width, width) = lower + lower.transpose();
-            grown.bottomRightCorner(width, width).diagonal() *= 0.5;
+            for (int j = first3; j < new3; ++j)  // the new block symmetric, from its lower triangle
+                for (int i = first3; i < j; ++i) grown(i, j) = grown(j, i);
             Eigen::PartialPivLU<Eigen::MatrixXd> lu(grown);
             if (!(lu.rcond() > 1e-15))
                 throw Error("crack system: the Schur complement of " + std::to_string(total) +
