@@ -290,8 +290,10 @@ int CrackSystem::update() {
     // The factor's order: unknowns at slots before the first changed one keep their factor; the
     // rest are factored again, unchanged ones first, changed and new ones last (mouth unknowns,
     // which change most, drift to the end, where refactoring is cheap).
+    std::vector<int> slotOf(assembledUnknowns_);  // unknown -> its slot in the factor
+    for (int s = 0; s < assembledUnknowns_; ++s) slotOf[slots_[s]] = s;
     int first = assembledUnknowns_;
-    for (int i = 0; i < changed; ++i) first = std::min(first, slotOf_[redo[i]]);
+    for (int i = 0; i < changed; ++i) first = std::min(first, slotOf[redo[i]]);
     std::vector<int> slots(slots_.begin(), slots_.begin() + first);
     for (int s = first; s < assembledUnknowns_; ++s)
         if (position[slots_[s]] < 0) slots.push_back(slots_[s]);
@@ -400,7 +402,7 @@ int CrackSystem::update() {
                 else if (pu >= 0)
                     block = columns.block<3, 3>(3 * v, 3 * pu).transpose();
                 else
-                    block = oldColumns.block<3, 3>(3 * slotOf_[u], 3 * (slotOf_[v] - first));
+                    block = oldColumns.block<3, 3>(3 * slotOf[u], 3 * (slotOf[v] - first));
             }
         }
         columns.resize(0, 0);
@@ -441,8 +443,6 @@ int CrackSystem::update() {
             lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>();
         }
         slots_ = std::move(slots);
-        slotOf_.assign(total, -1);
-        for (int s = 0; s < total; ++s) slotOf_[slots_[s]] = s;
         fingerprints_ = std::move(fingerprints);
         assembledUnknowns_ = total;
     } catch (const Error&) {

@@ -75,8 +75,8 @@ private:
     Eigen::MatrixXd denseSchur_;                                           // S in full, once Cholesky failed
     Eigen::PartialPivLU<Eigen::MatrixXd> lu_;                              // its LU
     int assembledUnknowns_ = 0;
-    // The factor's order (slot -> crack unknown) and its inverse: C, D and G are in unknown order.
-    std::vector<int> slots_, slotOf_;
+    // The factor's order (slot -> crack unknown): C, D and G are in unknown order.
+    std::vector<int> slots_;
     std::vector<std::uint64_t> fingerprints_;  // per assembled unknown: its basis function's hash
     bool luLogged_ = false;                    // the LU fallback is logged as info once, then as debug
     int unfollowedEdges_ = 0;  // the most mouth edges left out of a cut so far (logged when it grows)
