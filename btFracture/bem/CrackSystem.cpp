@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -74,6 +75,24 @@ std::string scientific(double x) {
     std::ostringstream out;
     out << x;
     return out.str();
+}
+
+// Rows per block of the LU factors (48 crack unknowns).
+constexpr int kLuBlock = 144;
+
+// ||S x - b|| / (||S|| ||x|| + ||b||), Frobenius norm for S.
+double backwardError(const Eigen::MatrixXd& S, const Eigen::VectorXd& x, const Eigen::VectorXd& b) {
+    return (S * x - b).norm() / std::max(S.norm() * x.norm() + b.norm(), 1e-300);
+}
+
+// The backward error of a solve with `lu` for a fixed right-hand side of S (a check of the
+// block-pivoted factors' growth, one O(n^2) solve).
+double probeBackwardError(const BorderedLU& lu, const Eigen::MatrixXd& S) {
+    Eigen::VectorXd b(S.rows());
+    for (int i = 0; i < b.size(); ++i) b[i] = 1.0 + (i % 7) / 7.0;
+    Eigen::VectorXd x = b;
+    lu.solveInPlace(x);
+    return x.allFinite() ? backwardError(S, x, b) : std::numeric_limits<double>::infinity();
 }
 
 // A hash of a basis function's restriction to one element (corners and values, bit for bit).
@@ -429,10 +448,31 @@ int CrackSystem::update() {
             grown.bottomLeftCorner(width, first3) = tail.topRows(first3).transpose();
             for (int j = first3; j < new3; ++j)  // the new block symmetric, from its lower triangle
                 for (int i = first3; i < j; ++i) grown(i, j) = grown(j, i);
-            Eigen::PartialPivLU<Eigen::MatrixXd> lu(grown);
-            if (!(lu.rcond() > 1e-15))
+            // The LU extended from its last block boundary among the kept slots in blocks of
+            // kLuBlock rows (so that a later change keeps the blocks before it); factored anew in
+            // one block when a block is singular or the block pivoting lost accuracy.
+            const double norm1 = grown.cwiseAbs().colwise().sum().maxCoeff();
+            const auto factorFrom = [&grown, norm1, new3](BorderedLU& f, int block) {
+                double smallest = std::numeric_limits<double>::infinity();
+                for (int r = f.size(); r < new3; r = f.size()) {
+                    const int h = std::min(block, new3 - r);
+                    const double rcond =
+                        f.extend(grown.block(0, r, r + h, h), grown.block(r, 0, h, r), norm1, 1e-15);
+                    if (!(rcond > 1e-15)) return rcond;  // not extended
+                    smallest = std::min(smallest, rcond);
+                }
+                return smallest;
+            };
+            BorderedLU lu = wasDense ? lu_ : BorderedLU();
+            lu.truncate(first3);
+            double rcond = factorFrom(lu, kLuBlock);
+            if (!(rcond > 1e-15 && probeBackwardError(lu, grown) <= 1e-11)) {
+                lu = BorderedLU();
+                rcond = factorFrom(lu, new3);
+            }
+            if (!(rcond > 1e-15))
                 throw Error("crack system: the Schur complement of " + std::to_string(total) +
-                            " crack unknowns is singular (reciprocal condition " + scientific(lu.rcond()) +
+                            " crack unknowns is singular (reciprocal condition " + scientific(rcond) +
                             "); the crack mesh is probably degenerate (slivers, overlapping sheets)");
             denseSchur_ = std::move(grown);
             lu_ = std::move(lu);
@@ -440,7 +480,7 @@ int CrackSystem::update() {
         } else {
             if (copy) schur_ = std::move(*copy);
             denseSchur_.resize(0, 0);
-            lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>();
+            lu_ = BorderedLU();
         }
         slots_ = std::move(slots);
         fingerprints_ = std::move(fingerprints);
@@ -475,11 +515,11 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {
     for (int k = 0; k < assembledUnknowns_; ++k) x.segment<3>(3 * k) = rhs.segment<3>(3 * slots_[k]);
     if (denseSchur_.size() > 0) {
         const Eigen::VectorXd ordered = x;
-        x = lu_.solve(ordered);
-        // Normwise backward error: LU is backward stable, so only a broken solve exceeds it (the
-        // residual relative to the load alone grows with S's condition near separation).
-        const double residual = (denseSchur_ * x - ordered).norm() /
-                                std::max(denseSchur_.norm() * x.norm() + ordered.norm(), 1e-300);
+        lu_.solveInPlace(x);
+        // Normwise backward error: the LU passed a probe solve at 1e-11, so only a broken solve
+        // exceeds it (the residual relative to the load alone grows with S's condition near
+        // separation).
+        const double residual = backwardError(denseSchur_, x, ordered);
         if (!(residual <= 1e-10))
             throw Error("crack system: Schur complement solve failed (backward error " +
                         scientific(residual) + "); the crack mesh is probably degenerate");
@@ -528,8 +568,8 @@ Eigen::VectorXd CrackSystem::loadOnCracks(const Eigen::VectorXd& q) const {
 }
 
 std::size_t CrackSystem::matrixBytes() const {
-    return sizeof(double) * (C_.size() + D_.size() + 2 * denseSchur_.size()) + sizeof(float) * G_.size() +
-           schur_.bytes();
+    return sizeof(double) * (C_.size() + D_.size() + denseSchur_.size()) + sizeof(float) * G_.size() +
+           schur_.bytes() + lu_.bytes();
 }
 
 Eigen::VectorXd CrackSystem::nodalOpenings(const Solution& s) const {

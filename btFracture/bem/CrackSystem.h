@@ -14,13 +14,14 @@
 // factor is extended by bordering (BorderedCholesky): D is folded into it and freed. Unknowns
 // whose basis function a changed mouth cut alters are assembled again and refactored last. A system
 // whose S is not numerically positive definite (carried cracks that leave a fragment's surface)
-// is factored by LU from then on, S held in full and refactored when it grows (logged).
+// is factored by LU from then on (logged), S held in full and the LU extended block by block as
+// it grows (BorderedLU; factored anew in one block when the block pivoting loses accuracy).
 #include <btFracture/bem/BorderedCholesky.h>
+#include <btFracture/bem/BorderedLU.h>
 #include <btFracture/bem/CrackMesh.h>
 #include <btFracture/bem/ElasticSolver.h>
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include <cstdint>
 #include <vector>
@@ -73,7 +74,7 @@ private:
     Eigen::MatrixXd regularisedLoadSolve(const Eigen::MatrixXd& b) const;  // K_R^-1 K^T b
     BorderedCholesky schur_;                                               // S = D - C^T K_R^-1 K^T C
     Eigen::MatrixXd denseSchur_;                                           // S in full, once Cholesky failed
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu_;                              // its LU
+    BorderedLU lu_;                                                        // its LU, grown with it
     int assembledUnknowns_ = 0;
     // The factor's order (slot -> crack unknown): C, D and G are in unknown order.
     std::vector<int> slots_;
