@@ -427,12 +427,14 @@ int CrackSystem::update() {
         columns.resize(0, 0);
         Eigen::MatrixXd head;                  // S of the kept slots from the factor, once Cholesky fails
         std::optional<BorderedCholesky> copy;  // the factor is left as it was if this throws
-        if (first3 < schur_.size() || (wasDense && changed > 0)) copy = schur_;
+        if (first3 < schur_.size() || wasDense) copy = schur_;
+        // On LU, the factor is the Cholesky factor of S's leading positive definite slots.
         BorderedCholesky& factor = copy ? *copy : schur_;
         factor.truncate(first3);
         bool dense = wasDense;
         // Back to Cholesky after a change if the kept part allows it.
-        if (dense && changed > 0 && factor.extend(denseSchur_.topLeftCorner(first3, first3), 1e-15))
+        if (dense && changed > 0 &&
+            factor.extend(denseSchur_.block(0, factor.size(), first3, first3 - factor.size()), 1e-15))
             dense = false;
         if (!dense && !factor.extend(tail, 1e-15)) {
             logf(luLogged_ ? LogLevel::Debug : LogLevel::Info, "crack system: the Schur complement of ",
@@ -476,12 +478,11 @@ int CrackSystem::update() {
                             "); the crack mesh is probably degenerate (slivers, overlapping sheets)");
             denseSchur_ = std::move(grown);
             lu_ = std::move(lu);
-            schur_ = BorderedCholesky();
         } else {
-            if (copy) schur_ = std::move(*copy);
             denseSchur_.resize(0, 0);
             lu_ = BorderedLU();
         }
+        if (copy) schur_ = std::move(*copy);
         slots_ = std::move(slots);
         fingerprints_ = std::move(fingerprints);
         assembledUnknowns_ = total;

@@ -72,9 +72,9 @@ private:
     Eigen::MatrixXf G_;
     Eigen::VectorXd loadOnCracks(const Eigen::VectorXd& tractions) const;  // G q
     Eigen::MatrixXd regularisedLoadSolve(const Eigen::MatrixXd& b) const;  // K_R^-1 K^T b
-    BorderedCholesky schur_;                                               // S = D - C^T K_R^-1 K^T C
-    Eigen::MatrixXd denseSchur_;                                           // S in full, once Cholesky failed
-    BorderedLU lu_;                                                        // its LU, grown with it
+    BorderedCholesky schur_;      // S = D - C^T K_R^-1 K^T C; on LU, of S's leading positive definite slots
+    Eigen::MatrixXd denseSchur_;  // S in full, once Cholesky failed
+    BorderedLU lu_;               // its LU, grown with it
     int assembledUnknowns_ = 0;
     // The factor's order (slot -> crack unknown): C, D and G are in unknown order.
     std::vector<int> slots_;
