@@ -3,8 +3,6 @@
 
 #include <Eigen/LU>
 
-#include <cmath>
-
 namespace btfracture {
 
 double BorderedLU::extend(const Eigen::Ref<const Eigen::MatrixXd>& columns,
