@@ -9,7 +9,7 @@
 
 #include <Eigen/Cholesky>
 
-#include <random>
+#include "../support/RandomMatrix.h"
 
 using namespace btfracture;
 
@@ -17,11 +17,7 @@ namespace {
 
 // A seeded SPD matrix with condition number about 1e4.
 Eigen::MatrixXd spdMatrix(int n) {
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    Eigen::MatrixXd a(n, n);
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) a(i, j) = u(rng);
+    const Eigen::MatrixXd a = test::seededUniformMatrix(n, 7);
     Eigen::MatrixXd s = a * a.transpose() / n;
     s.diagonal().array() += 1e-2;
     return s;

@@ -9,7 +9,7 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 
-#include <random>
+#include "../support/RandomMatrix.h"
 
 using namespace btfracture;
 
@@ -17,12 +17,7 @@ namespace {
 
 // A seeded symmetric indefinite matrix: eigenvalues of both signs, none closer to 0 than 0.05.
 Eigen::MatrixXd indefiniteMatrix(int n) {
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    Eigen::MatrixXd a(n, n);
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) a(i, j) = u(rng);
-    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(a);
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(test::seededUniformMatrix(n, 11));
     const Eigen::MatrixXd q = qr.householderQ();
     Eigen::VectorXd eigenvalues(n);
     for (int i = 0; i < n; ++i) eigenvalues[i] = (i % 3 == 0 ? -1.0 : 1.0) * (0.05 + 2.0 * i / n);
