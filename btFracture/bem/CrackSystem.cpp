@@ -79,6 +79,8 @@ std::string scientific(double x) {
 
 // Rows per block of the LU factors (48 crack unknowns).
 constexpr int kLuBlock = 144;
+// At or below this estimate of S's reciprocal condition number the LU treats S as singular.
+constexpr double kMinimumRcond = 1e-15;
 
 // ||S x - b|| / (||S|| ||x|| + ||b||), Frobenius norm for S.
 double backwardError(const Eigen::MatrixXd& S, const Eigen::VectorXd& x, const Eigen::VectorXd& b) {
@@ -459,8 +461,8 @@ int CrackSystem::update() {
                 for (int r = f.size(); r < new3; r = f.size()) {
                     const int h = std::min(block, new3 - r);
                     const double rcond =
-                        f.extend(grown.block(0, r, r + h, h), grown.block(r, 0, h, r), norm1, 1e-15);
-                    if (!(rcond > 1e-15)) return rcond;  // not extended
+                        f.extend(grown.block(0, r, r + h, h), grown.block(r, 0, h, r), norm1, kMinimumRcond);
+                    if (!(rcond > kMinimumRcond)) return rcond;  // not extended
                     smallest = std::min(smallest, rcond);
                 }
                 return smallest;
@@ -468,11 +470,11 @@ int CrackSystem::update() {
             BorderedLU lu = wasDense ? lu_ : BorderedLU();
             lu.truncate(first3);
             double rcond = factorFrom(lu, kLuBlock);
-            if (!(rcond > 1e-15 && probeBackwardError(lu, grown) <= 1e-11)) {
+            if (!(rcond > kMinimumRcond && probeBackwardError(lu, grown) <= 1e-11)) {
                 lu = BorderedLU();
                 rcond = factorFrom(lu, new3);
             }
-            if (!(rcond > 1e-15))
+            if (!(rcond > kMinimumRcond))
                 throw Error("crack system: the Schur complement of " + std::to_string(total) +
                             " crack unknowns is singular (reciprocal condition " + scientific(rcond) +
                             "); the crack mesh is probably degenerate (slivers, overlapping sheets)");
