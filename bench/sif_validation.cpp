@@ -7,7 +7,9 @@
 // mid-thickness per step. Penny crack of radius a in a cube of side 8 a under tension normal to
 // it (Kassir & Sih): per ring count, the mean and worst-node K_I error and the largest change of
 // a node's K_I when the disc pattern is turned by 30 degrees (same polar angle). Then both with
-// crack elements finer than the BEM surface's (h = BEM edge, / 2, / 3).
+// crack elements finer than the BEM surface's (h = BEM edge, / 2, / 3). Semicircular surface crack
+// (the shape of FULL's seeds) in a plate under tension: K_I at the deepest front node against
+// Newman & Raju per ring count.
 #include <btFracture/bem/CrackSystem.h>
 #include <btFracture/bem/ElasticSolver.h>
 #include <btFracture/fracture/CrackSeed.h>
@@ -191,6 +193,21 @@ double edgeCrackFinerThanSurfaceError(double ratio) {
     return std::abs(error);
 }
 
+// The semicircular surface crack at 4, 6 and 8 rings; returns the K_I error at 8.
+double semicircularCrackError() {
+    double error = 0.0;
+    for (int rings : {4, 6, 8}) {
+        const SemicircularCrackResult r = solveSemicircularCrack(rings, kMaterial);
+        error = r.deepestKI / r.exactKI - 1.0;
+        std::printf(
+            "semicircular surface crack, %d rings: %d surface triangles, %d crack unknowns (%d on the "
+            "mouth), K_I deepest %+.1f %% of Newman-Raju\n",
+            rings, r.surfaceTriangles, r.crackUnknowns, r.mouthNodes, 100 * error);
+        std::fflush(stdout);
+    }
+    return std::abs(error);
+}
+
 }  // namespace
 
 int main() {
@@ -208,6 +225,7 @@ int main() {
         [] { metric("penny_worst_node_error_8rings", pennyWorstNodeError()); },
         [] { metric("penny_worst_node_error_h_third_of_bem_edge", pennyFinerThanSurfaceError()); },
         [] { metric("edge_crack_error_0p2_h_third_of_bem_edge", edgeCrackFinerThanSurfaceError(0.2)); },
+        [] { metric("semicircular_crack_error_8rings", semicircularCrackError()); },
     };
     for (const auto& c : cases) c();
     return 0;

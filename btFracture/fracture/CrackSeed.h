@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Zlib
 #pragma once
-// Planar disc-shaped crack sheets: the initiation seed (a hexagon, one ring) and, with more
-// rings, penny-shaped test cracks.
+// Planar disc-shaped crack sheets: the initiation seeds (one ring: a hexagon inside the body, or
+// half of one on its surface) and, with more rings, penny-shaped and semicircular test cracks.
 #include <btFracture/bem/CrackMesh.h>
 
 #include <Eigen/Core>
@@ -16,5 +16,14 @@ namespace btfracture {
 // triangles.
 std::vector<int> addDiscCrack(CrackMesh& cracks, const Eigen::Vector3d& centre, const Eigen::Vector3d& normal,
                               double radius, int rings, double rotation = 0.0);
+
+// Adds half such a disc: the half on the `inward` side (in the crack plane, unit) of the diameter
+// through `centre` along normal x inward, with 3 k + 1 nodes on ring k from one end of the
+// diameter to the other. On a flat face whose tangent plane contains that diameter, the nodes on
+// it lie on the surface: a semicircular surface crack whose mouth is the diameter. Returns the new
+// triangles.
+std::vector<int> addHalfDiscCrack(CrackMesh& cracks, const Eigen::Vector3d& centre,
+                                  const Eigen::Vector3d& normal, const Eigen::Vector3d& inward, double radius,
+                                  int rings);
 
 }  // namespace btfracture

@@ -63,8 +63,12 @@ int FractureSolver::seed() {
     const auto stresses =
         surfaceStresses(solver_.mesh(), m.youngsModulus(), m.poissonRatio(), displacements_, tractions_);
     const auto candidates = findSeedCandidates(solver_.mesh(), stresses, field_, cracks_, seeded_);
-    const int seeds = seedCracks(cracks_, solver_.mesh(), candidates, settings_.maxNewCracksPerEvent,
-                                 settings_.seedRadius, settings_.crackElementSize, seeded_);
+    const int seeds =
+        seedCracks(cracks_, solver_.mesh(), candidates, settings_.maxNewCracksPerEvent, settings_.seedRadius,
+                   settings_.crackElementSize,
+                   active_ == FractureMethod::Full && settings_.surfaceSeeds ? SeedShape::SurfaceBreaking
+                                                                             : SeedShape::Embedded,
+                   seeded_);
     arrested_.resize(cracks_.nodeCount(), 0);
     if (seeds > 0) {
         const std::vector<int> fresh = cracks_.refreshUnknowns(solver_.mesh());

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: Zlib
+#include <btFracture/bem/ElasticSolver.h>
 #include <btFracture/core/Error.h>
 #include <btFracture/core/PortableMath.h>
 #include <btFracture/core/Primitives.h>
@@ -201,6 +202,50 @@ SurfaceCrackResult solveSurfaceCrack(const SurfaceCrackCase& c, const Material& 
         out.crackUnknowns = fracture.cracks().unknownCount();
     }
     out.surfaceTriangles = solver.mesh().triangleCount();
+    return out;
+}
+
+double newmanRajuDeepestFactor(double aOverT, double cOverB) {
+    // Newman & Raju (1981), a/c = 1, phi = 90 degrees: M1 = 1.04, M2 = -0.54 + 0.89 / 1.2,
+    // M3 = 0.5 - 1 / 1.65, g = f_phi = 1, Q = 1 + 1.464, f_w = sec(pi c / 2b sqrt(a/t))^(1/2).
+    const double m2 = -0.54 + 0.89 / 1.2, m3 = 0.5 - 1.0 / 1.65;
+    const double F = 1.04 + m2 * std::pow(aOverT, 2) + m3 * std::pow(aOverT, 4);
+    const double fw = std::sqrt(1.0 / std::cos(0.5 * M_PI * cOverB * std::sqrt(aOverT)));
+    return F * fw / std::sqrt(2.464);
+}
+
+SemicircularCrackResult solveSemicircularCrack(int rings, const Material& material) {
+    const double a = 0.02, t = 4 * a, halfWidth = 4 * a, sigma = kEdgeCrackTension, h = a / rings;
+    const TriangleMesh body =
+        makeGridBox({gradedLines(0.0, t, 0.0, a + h, h), gradedLines(-8 * a, 8 * a, -h, h, h),
+                     gradedLines(-halfWidth, halfWidth, -a - h, a + h, h)});
+    const ElasticSolver solver{SurfaceMesh(body), material};
+    const SurfaceMesh& mesh = solver.mesh();
+    Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();
+    stress(1, 1) = sigma;
+    FractureSettings fs;
+    fs.method = FractureMethod::Full;
+    FractureSolver fracture(solver, MaterialField(material), fs);
+    addHalfDiscCrack(fracture.cracks(), -mesh.offset(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX(), a,
+                     rings);
+    fracture.beginEvent(uniformStressTractions(mesh, stress));
+    const std::vector<FrontSifs> sifs = fracture.frontSifs();
+    if (sifs.empty()) throw Error("semicircular crack: the crack has no front");
+    const auto deepest =
+        std::max_element(sifs.begin(), sifs.end(), [&](const FrontSifs& x, const FrontSifs& y) {
+            return (x.position + mesh.offset()).x() < (y.position + mesh.offset()).x();
+        });
+    const auto shallowest =
+        std::min_element(sifs.begin(), sifs.end(), [&](const FrontSifs& x, const FrontSifs& y) {
+            return (x.position + mesh.offset()).x() < (y.position + mesh.offset()).x();
+        });
+    SemicircularCrackResult out;
+    out.deepestKI = deepest->KI;
+    out.surfaceKI = shallowest->KI;
+    out.exactKI = sigma * std::sqrt(M_PI * a) * newmanRajuDeepestFactor(a / t, a / halfWidth);
+    out.surfaceTriangles = mesh.triangleCount();
+    out.crackUnknowns = fracture.cracks().unknownCount();
+    for (int i = 0; i < fracture.cracks().nodeCount(); ++i) out.mouthNodes += fracture.cracks().isMouth(i);
     return out;
 }
 

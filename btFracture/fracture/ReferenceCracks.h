@@ -78,6 +78,19 @@ void addSurfaceCrackSheet(CrackMesh& cracks, const SurfaceCrackCase& c, const Su
 const FrontSifs& midThicknessSifs(const std::vector<FrontSifs>& sifs, const SurfaceCrackCase& c,
                                   const SurfaceMesh& body);
 
+// Semicircular surface crack of radius a = 2 cm, `rings` rings (addHalfDiscCrack), from the face
+// x = 0 of a plate t = 4 a thick (x), 8 a wide (z) and 16 a high (y) under uniform tension sigma =
+// kEdgeCrackTension along y; surface elements of a / rings near the crack. K_I at the deepest
+// front node against Newman & Raju (1981) for a/c = 1, a/t = 0.25, c/b = 0.25 (their fit is
+// within about 5 % of their finite-element values): 0.677 sigma sqrt(pi a).
+struct SemicircularCrackResult {
+    double deepestKI = 0.0, exactKI = 0.0;  // [Pa m^(1/2)]
+    double surfaceKI = 0.0;  // at the front node nearest the face (not fitted there: reported only)
+    int surfaceTriangles = 0, crackUnknowns = 0, mouthNodes = 0;
+};
+SemicircularCrackResult solveSemicircularCrack(int rings, const Material& material);
+double newmanRajuDeepestFactor(double aOverT, double cOverB);  // K_I / (sigma sqrt(pi a)), a = c
+
 struct SurfaceCrackResult {
     // At the front node nearest mid-thickness: FULL (Eq. 4, displacement correlation) and EST
     // (§4.2 from the crack-free local stress, as at the start of an event: no front has moved).

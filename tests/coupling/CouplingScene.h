@@ -32,6 +32,7 @@ struct SceneOptions {
     int bemTriangleTarget = FractureBodySettings().bemTriangleTarget;  // the slab's BEM resolution
     bool withEngine = true;
     bool physicalEngine = false;  // BemFractureEngine instead of the plane-split stand-in
+    bool surfaceSeeds = false;    // its CrackSettings::surfaceSeeds
     Eigen::Vector3d slabHalfExtents = Eigen::Vector3d(0.2, 0.025, 0.2);  // [m]
     // Free flight: no gravity, the slab lifted 0.5 m off the ground, moving and spinning.
     bool freeFlight = false;
@@ -81,9 +82,11 @@ public:
         world = std::make_unique<btFractureDynamicsWorld>(&dispatcher, &broadphase, &solver, &config);
         world->setGravity(btVector3(0, options.freeFlight ? btScalar(0) : btScalar(-9.81), 0));
         const double lift = options.freeFlight ? 0.5 : 0.0;
-        if (options.withEngine && options.physicalEngine)
-            world->setFractureEngine(std::make_unique<BemFractureEngine>());
-        else if (options.withEngine)
+        if (options.withEngine && options.physicalEngine) {
+            BemFractureEngineSettings engine;
+            engine.fracture.surfaceSeeds = options.surfaceSeeds;
+            world->setFractureEngine(std::make_unique<BemFractureEngine>(engine));
+        } else if (options.withEngine)
             world->setFractureEngine(std::make_unique<PlaneSplitFractureEngine>());
 
         btTransform t;

@@ -92,6 +92,27 @@ TEST(BemEngine, SlabBreaksAtEveryNearbyBemResolution) {
     }
 }
 
+// With FULL's seeds on the surface (CrackSettings::surfaceSeeds; HYBRID starts as FULL) the ball
+// breaks the slab too, at nearby BEM resolutions and at 0.9 of the speed.
+TEST(BemEngine, SurfaceSeedsBreakTheSlab) {
+    for (const double speed : {1.0, 0.9})
+        for (const int target : {950, 1000, 1050}) {
+            SceneOptions options;
+            options.physicalEngine = true;
+            options.surfaceSeeds = true;
+            options.bemTriangleTarget = target;
+            options.ballSpeed *= speed;
+            Scene scene(options);
+            EventProbe listener(*scene.world);
+            scene.world->addFractureListener(&listener);
+            stepUntilFirstEvent(scene, listener, 20);
+            std::printf("surface seeds, BEM target %d, %.1f x speed: %d events, %d pieces\n", target, speed,
+                        listener.events, listener.pieces);
+            EXPECT_EQ(listener.events, 1) << "BEM target " << target << ", " << speed << " x speed";
+            EXPECT_GE(listener.pieces, 2) << "BEM target " << target << ", " << speed << " x speed";
+        }
+}
+
 TEST(BemEngine, SlowBallBuildsNothing) {
     SceneOptions options;
     options.physicalEngine = true;

@@ -363,22 +363,42 @@ TEST(FractureSolver, EstimatorCountsOnlyTheCrackAreaInsideTheBody) {
 
 TEST(FractureSolver, InitiationSeedsCracksPerpendicularToTension) {
     // A bar pulled along x above its strength: seeds appear with normals along x, at most the
-    // cap, all inside the body, none next to another.
+    // cap, none next to another; FULL's with surfaceSeeds are half-hexagons on the surface whose
+    // diameter opens as mouth, EST's hexagons inside.
     const Material weak(3.1e9, 0.327, 1200.0, 5e5, 1e9, 2.0, "weak");  // tough: seeds do not grow
     Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
     sigma(0, 0) = 1e6;
     const Slab s = slab(sigma, weak);
+    const SurfaceMesh& m = s.solver->mesh();
+    {
+        FractureSettings fs;
+        fs.method = FractureMethod::Estimated;
+        fs.maxNewCracksPerEvent = 3;
+        FractureSolver fracture(*s.solver, MaterialField(weak), fs);
+        EXPECT_EQ(fracture.run(s.tractions, 0.0).seeds, 3);
+        const CrackMesh& cracks = fracture.cracks();
+        EXPECT_EQ(cracks.triangleCount(), 18);  // three hexagons
+        for (int i = 0; i < cracks.nodeCount(); ++i)
+            EXPECT_GT(windingNumber(m.nodes(), m.triangles(), cracks.node(i)), 0.5);
+    }
     FractureSettings fs;
+    fs.method = FractureMethod::Full;
+    fs.surfaceSeeds = true;
     fs.maxNewCracksPerEvent = 3;
     FractureSolver fracture(*s.solver, MaterialField(weak), fs);
     const FractureEventReport report = fracture.run(s.tractions, 0.0);
     EXPECT_EQ(report.seeds, 3);
     const CrackMesh& cracks = fracture.cracks();
-    EXPECT_EQ(cracks.triangleCount(), 18);  // three hexagons
-    const SurfaceMesh& m = s.solver->mesh();
+    EXPECT_EQ(cracks.triangleCount(), 36);  // three two-ring half-hexagons
     for (int t = 0; t < cracks.triangleCount(); ++t) EXPECT_GT(std::abs(cracks.normal(t).x()), 0.99);
-    for (int i = 0; i < cracks.nodeCount(); ++i)
-        EXPECT_GT(windingNumber(m.nodes(), m.triangles(), cracks.node(i)), 0.5);
+    int mouth = 0;
+    for (int i = 0; i < cracks.nodeCount(); ++i) {
+        mouth += cracks.isMouth(i);
+        if (!cracks.onSurface(i)) {
+            EXPECT_GT(windingNumber(m.nodes(), m.triangles(), cracks.node(i)), 0.5);
+        }
+    }
+    EXPECT_EQ(mouth, 9);  // of each seed's five diameter nodes, all but the ends
     // Tough material: nothing grows, no step advances.
     for (const auto& r : report.steps) EXPECT_EQ(r.advancedNodes, 0);
     // A second event at the same load seeds elsewhere: no new seed within the diameter of a
@@ -543,21 +563,32 @@ TEST(FractureSolver, SeedsInAThinWallAreHalvedToFit) {
     ElasticSolver solver(SurfaceMesh(makeBox(Eigen::Vector3d(0.1, 0.004, 0.06), 10, 1, 6)), weak);
     Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
     sigma(0, 0) = 1e6;
-    FractureSettings fs;
-    fs.maxNewCracksPerEvent = 3;
-    FractureSolver fracture(solver, MaterialField(weak), fs);
-    const FractureEventReport report = fracture.run(uniformStressTractions(solver.mesh(), sigma), 0.0);
-    EXPECT_EQ(report.seeds, 3);
-    const CrackMesh& cracks = fracture.cracks();
     const SurfaceMesh& m = solver.mesh();
-    for (int i = 0; i < cracks.nodeCount(); ++i)
-        EXPECT_GT(windingNumber(m.nodes(), m.triangles(), cracks.node(i)), 0.5);
-    // A hexagon's circumradius is its edge length: a quarter of the full seed's at most.
     double fullRadius = 0.0;
     for (int t = 0; t < m.triangleCount(); ++t)
-        fullRadius = std::max(fullRadius, fs.seedRadius * m.diameter(t));
-    for (int t = 0; t < cracks.triangleCount(); ++t) {
-        const auto& tri = cracks.triangle(t);
-        EXPECT_LE((cracks.node(tri[1]) - cracks.node(tri[2])).norm(), 0.26 * fullRadius);
+        fullRadius = std::max(fullRadius, FractureSettings().seedRadius * m.diameter(t));
+    // EST's one-ring hexagon inside (1.05 r + r across the 8 mm wall) fits at a quarter of the full
+    // seed at most, FULL's two-ring half-hexagon on a face (r across it, surfaceSeeds) at a half:
+    // edges of r / rings.
+    for (const auto& [method, largest] :
+         {std::pair{FractureMethod::Estimated, 0.26}, std::pair{FractureMethod::Full, 0.26}}) {
+        FractureSettings fs;
+        fs.method = method;
+        fs.surfaceSeeds = true;  // FULL's half-hexagons; EST seeds hexagons inside regardless
+        fs.maxNewCracksPerEvent = 3;
+        FractureSolver fracture(solver, MaterialField(weak), fs);
+        const FractureEventReport report = fracture.run(uniformStressTractions(solver.mesh(), sigma), 0.0);
+        EXPECT_EQ(report.seeds, 3) << toString(method);
+        const CrackMesh& cracks = fracture.cracks();
+        for (int i = 0; i < cracks.nodeCount(); ++i) {
+            if (!cracks.onSurface(i)) {
+                EXPECT_GT(windingNumber(m.nodes(), m.triangles(), cracks.node(i)), 0.5) << toString(method);
+            }
+        }
+        for (int t = 0; t < cracks.triangleCount(); ++t) {
+            const auto& tri = cracks.triangle(t);
+            EXPECT_LE((cracks.node(tri[1]) - cracks.node(tri[2])).norm(), largest * fullRadius)
+                << toString(method);
+        }
     }
 }
