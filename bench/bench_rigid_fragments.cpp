@@ -36,9 +36,9 @@
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/BroadphaseCollision/btCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
-#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 #include <LinearMath/btQuickprof.h>
 
@@ -223,11 +223,12 @@ int main(int argc, char** argv) {
     for (const auto& [types, entry] : pairTimes) pairs.push_back(entry);
     std::sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) { return a.seconds > b.seconds; });
     for (const PairTime& entry : pairs)
-        std::printf("  narrowphase %-40s %8.3f ms per step, %8.1f pairs per step (%8.1f without "
-                    "contact points), %6.2f us per pair\n",
-                    entry.name.c_str(), entry.seconds * perStep, double(entry.pairs) / scene.world.steps,
-                    double(entry.apart) / scene.world.steps,
-                    entry.pairs > 0 ? 1e6 * entry.seconds / double(entry.pairs) : 0.0);
+        std::printf(
+            "  narrowphase %-40s %8.3f ms per step, %8.1f pairs per step (%8.1f without "
+            "contact points), %6.2f us per pair\n",
+            entry.name.c_str(), entry.seconds * perStep, double(entry.pairs) / scene.world.steps,
+            double(entry.apart) / scene.world.steps,
+            entry.pairs > 0 ? 1e6 * entry.seconds / double(entry.pairs) : 0.0);
     // Bullet's swept-sphere tests of the bodies that move more than their CCD motion threshold.
     for (const char* sweep : {"CCD motion clamping", "predictive convexSweepTest"}) {
         const auto found = zones.entries.find(sweep);

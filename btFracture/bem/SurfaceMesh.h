@@ -15,7 +15,8 @@ namespace btfracture {
 class SurfaceMesh {
 public:
     // Validates `mesh` (closed, manifold, consistently oriented; inside-out is flipped with a
-    // warning; one closed surface, no cavities or separate shells) and translates it so that the enclosed solid's centre of mass is the origin.
+    // warning; one closed surface, no cavities or separate shells) and translates it so that the enclosed
+    // solid's centre of mass is the origin.
     explicit SurfaceMesh(TriangleMesh mesh);
 
     int nodeCount() const { return static_cast<int>(nodes_.size()); }

@@ -53,7 +53,8 @@ std::string meshName(const TriangleMesh& mesh) {
 // to a quarter of the inradius); returns its collision geometry (shrunk points + actual margin),
 // or nullptr when the hull is flat or degenerate (fewer than 4 vertices).
 std::unique_ptr<btConvexHullShape> shrunkHull(const std::vector<Eigen::Vector3d>& points, double margin,
-                                              int maxVertices, const std::string& name, ConvexPolytope& piece) {
+                                              int maxVertices, const std::string& name,
+                                              ConvexPolytope& piece) {
     std::vector<double> coords;
     coords.reserve(3 * points.size());
     for (const auto& p : points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
@@ -124,8 +125,8 @@ std::vector<std::vector<Eigen::Vector3d>> decompose(const TriangleMesh& mesh,
 
 void CollisionShapeStorage::replacePieces(std::vector<ConvexPolytope> pieces) {
     if (kind_ == CollisionShapeKind::GImpactMesh || pieces.size() != pieces_.size())
-        throw Error("collision shape: cannot replace the " + std::to_string(pieces_.size()) + " convex pieces of a " +
-                    toString(kind_) + " by " + std::to_string(pieces.size()));
+        throw Error("collision shape: cannot replace the " + std::to_string(pieces_.size()) +
+                    " convex pieces of a " + toString(kind_) + " by " + std::to_string(pieces.size()));
     std::vector<std::unique_ptr<btCollisionShape>> hulls;
     for (const ConvexPolytope& piece : pieces) {
         if (piece.points.size() < 4) throw Error("collision shape: a replacement convex piece has no volume");
@@ -210,8 +211,8 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
             int flat = 0;
             for (std::size_t c = 0; c < clusters.size(); ++c) {
                 ConvexPolytope piece;
-                auto hull = shrunkHull(clusters[c], margin, options.hullMaxVertices, name + " piece " + std::to_string(c),
-                                       piece);
+                auto hull = shrunkHull(clusters[c], margin, options.hullMaxVertices,
+                                       name + " piece " + std::to_string(c), piece);
                 if (!hull) {  // a flat cluster holds no volume: leaving it out loses nothing
                     ++flat;
                     continue;

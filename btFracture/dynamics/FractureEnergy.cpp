@@ -21,7 +21,8 @@ double kineticEnergy(const btRigidBody& body) {
 double potentialEnergy(const btRigidBody& body) {
     if (body.getInvMass() == 0) return 0.0;
     const btVector3 g = body.getGravity(), x = body.getCenterOfMassPosition();
-    return -(double(g.x()) * x.x() + double(g.y()) * x.y() + double(g.z()) * x.z()) / double(body.getInvMass());
+    return -(double(g.x()) * x.x() + double(g.y()) * x.y() + double(g.z()) * x.z()) /
+           double(body.getInvMass());
 }
 
 double mechanicalEnergy(const btRigidBody& body) {

@@ -22,19 +22,19 @@ double mechanicalEnergy(const btRigidBody& body);  // kinetic + potential
 double mechanicalEnergy(const btDiscreteDynamicsWorld& world);
 
 struct FractureEnergyAudit {
-    std::uint64_t event = 0;         // FractureEventInfo::event of the audited event
-    double bodyKinetic = 0.0;        // the breaking body, state before the step
-    double partnersKinetic = 0.0;    // dynamic bodies in contact with it, state before the step
-    double swapKinetic = 0.0;        // its fragments with its rigid motion (v + w x r, w), unpushed
-    double separatedKinetic = 0.0;   // the fragments after the separation push
+    std::uint64_t event = 0;        // FractureEventInfo::event of the audited event
+    double bodyKinetic = 0.0;       // the breaking body, state before the step
+    double partnersKinetic = 0.0;   // dynamic bodies in contact with it, state before the step
+    double swapKinetic = 0.0;       // its fragments with its rigid motion (v + w x r, w), unpushed
+    double separatedKinetic = 0.0;  // the fragments after the separation push
     // Gravitational potential energy of the fragments minus the body's: at the body's pose (the
     // fragments' centres of mass against the body's), and after the separation push.
     double swapPotentialGain = 0.0;
     double separatedPotentialGain = 0.0;
-    double replayKinetic = 0.0;      // the fragments after the replayed step
-    double followingKinetic = 0.0;   // the fragments' largest kinetic energy over the following steps
-    int followingSteps = 0;          // steps followed after the replay
-    double worldBefore = 0.0;        // the world's mechanical energy before the step
+    double replayKinetic = 0.0;     // the fragments after the replayed step
+    double followingKinetic = 0.0;  // the fragments' largest kinetic energy over the following steps
+    int followingSteps = 0;         // steps followed after the replay
+    double worldBefore = 0.0;       // the world's mechanical energy before the step
     // Largest rise of the world's mechanical energy above worldBefore, after the replayed step and
     // over the following steps (negative: the world only lost energy, as inelastic contacts do).
     double worldGain = 0.0;

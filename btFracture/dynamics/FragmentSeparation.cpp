@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/FragmentSeparation.h>
 
-#include <btFracture/core/Log.h>
 #include <btFracture/core/Error.h>
+#include <btFracture/core/Log.h>
 #include <btFracture/geometry/ConvexClip.h>
 #include <btFracture/geometry/ConvexHull.h>
 

@@ -58,9 +58,9 @@ bool containWithin(SeparationBody& body, const std::vector<ConvexPolytope>& cont
 // the crack between them): such overlaps are left to the push, which moves the lighter body.
 struct TrimOptions {
     int maxSweeps = 4;
-    double tolerance = 1e-6;           // overlaps below tolerance * min length are left alone
-    double heavyRatio = 4.0;           // mass ratio above which only the lighter body is cut
-    double keepVolumeFraction = 0.7;   // of a piece's original hull volume
+    double tolerance = 1e-6;          // overlaps below tolerance * min length are left alone
+    double heavyRatio = 4.0;          // mass ratio above which only the lighter body is cut
+    double keepVolumeFraction = 0.7;  // of a piece's original hull volume
 };
 
 struct TrimResult {

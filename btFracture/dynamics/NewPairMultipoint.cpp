@@ -84,9 +84,10 @@ public:
         // points up to both margins beyond the threshold, and mapped back to the unturned body such
         // a point may land within the threshold.
         const int iterations = plain ? plainIterations_ : NewPairMultipoint::kIterations;
-        const btScalar reach = iterations == 0 ? btScalar(0)
-                                               : gContactBreakingThreshold + a->getCollisionShape()->getMargin() +
-                                                     b->getCollisionShape()->getMargin();
+        const btScalar reach = iterations == 0
+                                   ? btScalar(0)
+                                   : gContactBreakingThreshold + a->getCollisionShape()->getMargin() +
+                                         b->getCollisionShape()->getMargin();
         if (cache_ && cache_->apart(*a, *b, *manifold_, reach)) return;
         (plain ? plain_ : perturbed_)->processCollision(a, b, info, result);
         // Bullet's algorithms leave refreshing a manifold they do not own to its owner.

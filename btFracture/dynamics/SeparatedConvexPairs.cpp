@@ -35,7 +35,9 @@ public:
                                    btManifoldResult* result) override {
         return inner_->calculateTimeOfImpact(a, b, info, result);
     }
-    void getAllContactManifolds(btManifoldArray& manifolds) override { inner_->getAllContactManifolds(manifolds); }
+    void getAllContactManifolds(btManifoldArray& manifolds) override {
+        inner_->getAllContactManifolds(manifolds);
+    }
 
 private:
     // The inner algorithm's manifold, made on its first call and kept for its life.
@@ -80,8 +82,8 @@ struct SeparatedConvexPairs::Registered {
 SeparatedConvexPairs::SeparatedConvexPairs(btCollisionDispatcher& dispatcher,
                                            btCollisionConfiguration& configuration)
     : dispatcher_(dispatcher), registered_(std::make_unique<Registered>()) {
-    btCollisionAlgorithmCreateFunc* original =
-        configuration.getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE);
+    btCollisionAlgorithmCreateFunc* original = configuration.getCollisionAlgorithmCreateFunc(
+        CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE);
     // Perturbed contacts may land within the threshold of a pair whose gap exceeds it.
     auto* convex = dynamic_cast<btConvexConvexAlgorithm::CreateFunc*>(original);
     if (!convex || convex->m_numPerturbationIterations != 0) return;

@@ -283,7 +283,8 @@ btFractureDynamicsWorld::btFractureDynamicsWorld(btDispatcher* dispatcher, btBro
     if (auto* collisionDispatcher = dynamic_cast<btCollisionDispatcher*>(dispatcher)) {
         btGImpactCollisionAlgorithm::registerAlgorithm(collisionDispatcher);
         if (collisionConfiguration)
-            separatedPairs_ = std::make_unique<SeparatedConvexPairs>(*collisionDispatcher, *collisionConfiguration);
+            separatedPairs_ =
+                std::make_unique<SeparatedConvexPairs>(*collisionDispatcher, *collisionConfiguration);
     }
 }
 

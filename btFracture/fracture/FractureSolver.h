@@ -27,9 +27,9 @@ struct FractureStepRecord {
     int step = 0;
     FractureMethod method = FractureMethod::Full;  // Full or Estimated
     int frontNodes = 0, advancedNodes = 0, arrestedNodes = 0;
-    int crackTriangles = 0;     // after the step
-    double maxLoadRatio = 0.0;  // max K_eff / K_c over the front before the step
-    int gainLimitedNodes = 0;   // EST: fronts whose SIFs estimatorUpdateGainLimit scaled down
+    int crackTriangles = 0;      // after the step
+    double maxLoadRatio = 0.0;   // max K_eff / K_c over the front before the step
+    int gainLimitedNodes = 0;    // EST: fronts whose SIFs estimatorUpdateGainLimit scaled down
     int stressBoundedNodes = 0;  // EST: fronts whose local stress boundStress scaled down
     double sifSeconds = 0.0, growthSeconds = 0.0;
 };

@@ -113,13 +113,15 @@ ClosestPointTree::Hit ClosestPointTree::search(const Eigen::Vector3d& query, Acc
 }
 
 ClosestPointTree::Hit ClosestPointTree::closestPoint(const Eigen::Vector3d& query) const {
-    return search(query, [](int) { return true; }, std::numeric_limits<double>::infinity());
+    return search(
+        query, [](int) { return true; }, std::numeric_limits<double>::infinity());
 }
 
 ClosestPointTree::Hit ClosestPointTree::closestPoint(const Eigen::Vector3d& query,
                                                      const Eigen::Vector3d& normal, double minCosine) const {
     const Hit hit = search(
-        query, [&](int t) { return normals_[t].dot(normal) >= minCosine; }, std::numeric_limits<double>::infinity());
+        query, [&](int t) { return normals_[t].dot(normal) >= minCosine; },
+        std::numeric_limits<double>::infinity());
     return hit.triangle >= 0 ? hit : closestPoint(query);
 }
 

@@ -7,8 +7,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <vector>
 
@@ -51,8 +51,7 @@ std::vector<GridPoint> snapToGrid(const std::vector<Eigen::Vector3d>& points) {
     if (extent > 0.0) std::frexp(extent / static_cast<double>(kGridCells), &exponent);
     std::vector<GridPoint> grid(points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
-        for (int k = 0; k < 3; ++k)
-            grid[i][k] = std::llround(std::ldexp(points[i][k] - lo[k], -exponent));
+        for (int k = 0; k < 3; ++k) grid[i][k] = std::llround(std::ldexp(points[i][k] - lo[k], -exponent));
     return grid;
 }
 

@@ -38,7 +38,8 @@ double EdgeLengthField::at(const Eigen::Vector3d& p) const {
 
 double EdgeLengthField::latticeValue(const Eigen::Vector3i& node) const {
     constexpr std::int64_t span = std::int64_t(1) << 21;
-    const std::int64_t key = ((node.z() + span / 2) * span + (node.y() + span / 2)) * span + (node.x() + span / 2);
+    const std::int64_t key =
+        ((node.z() + span / 2) * span + (node.y() + span / 2)) * span + (node.x() + span / 2);
     const auto [it, fresh] = lattice_.try_emplace(key, 0.0);
     if (fresh) it->second = siteTerm(node.cast<double>() * spacing_);
     return it->second;

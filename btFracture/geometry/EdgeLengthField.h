@@ -30,11 +30,11 @@ public:
 
     // Target length at p: the smaller of the base length times the smallest factor of the balls
     // containing p and s G(p), s = base / referenceBase (sites follow the base both ways) or
-    // min(1, base / referenceBase) (a longer base leaves the sites' lengths as they are), G(p) = min over the sites i of length_i +
-    // grading |p - centre_i| (a length that grows by `grading` per unit distance away from a
-    // site, so that triangles can grade from small to large with good angles). G is evaluated
-    // at the nodes of a lattice of spacing half the smallest site length (once per node, when
-    // first needed) and interpolated trilinearly between them.
+    // min(1, base / referenceBase) (a longer base leaves the sites' lengths as they are), G(p) = min over the
+    // sites i of length_i + grading |p - centre_i| (a length that grows by `grading` per unit distance away
+    // from a site, so that triangles can grade from small to large with good angles). G is evaluated at the
+    // nodes of a lattice of spacing half the smallest site length (once per node, when first needed) and
+    // interpolated trilinearly between them.
     double at(const Eigen::Vector3d& p) const;
     // Replaces the sizing sites; `referenceBase` is the base their lengths refer to. grading > 0.
     void setSites(const std::vector<SizingSite>& sites, double referenceBase, double grading,

@@ -286,9 +286,9 @@ struct RemeshPass {
 };
 
 enum class Sizing {
-    WithinTarget,   // the sites' lengths follow the base length the triangle count steers to
-    Uniform,        // no sites: one base length
-    ThinPartsOwn,   // the sites keep their lengths; the base grows at most kMaxBaseGrowth times
+    WithinTarget,  // the sites' lengths follow the base length the triangle count steers to
+    Uniform,       // no sites: one base length
+    ThinPartsOwn,  // the sites keep their lengths; the base grows at most kMaxBaseGrowth times
 };
 
 // Isotropic remeshing, the angle repair and the separation of intersecting triangles (with
@@ -298,7 +298,8 @@ RemeshPass remeshPass(const RemeshContext& context, Sizing sizing) {
     RemeshPass pass{HalfEdgeMesh(input), {}, {}, 0.0};
     HalfEdgeMesh& mesh = pass.mesh;
     EdgeLengthField field(uniformBase);
-    if (sizing != Sizing::Uniform) field.setSites(sites, uniformBase, kGrading, sizing == Sizing::WithinTarget);
+    if (sizing != Sizing::Uniform)
+        field.setSites(sites, uniformBase, kGrading, sizing == Sizing::WithinTarget);
     const bool capped = sizing == Sizing::ThinPartsOwn && !sites.empty();
     for (int iteration = 0; iteration < options.iterations; ++iteration) {
         remeshIteration(mesh, surface, field, options.smoothingStep);
@@ -337,7 +338,8 @@ RemeshPass remeshPass(const RemeshContext& context, Sizing sizing) {
              " intersecting triangles");
         for (int iteration = 0; iteration < kRefinementIterations; ++iteration) {
             remeshIteration(mesh, surface, field, options.smoothingStep);
-            if (iteration + 2 < kRefinementIterations) steerCount(mesh, field, targetTriangles, uniformBase, capped);
+            if (iteration + 2 < kRefinementIterations)
+                steerCount(mesh, field, targetTriangles, uniformBase, capped);
             budget.check("local refinement");
         }
         edgeLength = field.base();
@@ -371,7 +373,8 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
     if (options.thicknessSizing == Mode::Never) order = {Sizing::Uniform};
     if (options.thicknessSizing == Mode::WhenUniformFails)
         order = {Sizing::Uniform, Sizing::WithinTarget, Sizing::ThinPartsOwn};
-    if (options.thicknessSizing == Mode::Always) order = {Sizing::WithinTarget, Sizing::Uniform, Sizing::ThinPartsOwn};
+    if (options.thicknessSizing == Mode::Always)
+        order = {Sizing::WithinTarget, Sizing::Uniform, Sizing::ThinPartsOwn};
     // The first pass without intersections is kept, else the one with fewest. A sized pass
     // within the target takes triangles from the thick parts for the thin ones; one with the
     // thin parts' own lengths lets the count grow beyond the target.
@@ -389,10 +392,12 @@ TriangleMesh remeshForBem(const TriangleMesh& input, int targetTriangles, const 
         }
         if (sizing != Sizing::Uniform && sites.empty()) continue;
         if (best)
-            logf(LogLevel::Info, source, ": ", best->untangle.remainingPairs, " pairs of intersecting triangles; ",
-                 sizing == Sizing::Uniform        ? "remeshing with a uniform edge length"
-                 : sizing == Sizing::WithinTarget ? "remeshing with shorter edges at thin parts"
-                                                  : "remeshing with the thin parts' own edge lengths beyond the target");
+            logf(LogLevel::Info, source, ": ", best->untangle.remainingPairs,
+                 " pairs of intersecting triangles; ",
+                 sizing == Sizing::Uniform ? "remeshing with a uniform edge length"
+                 : sizing == Sizing::WithinTarget
+                     ? "remeshing with shorter edges at thin parts"
+                     : "remeshing with the thin parts' own edge lengths beyond the target");
         RemeshPass pass = remeshPass(context, sizing);
         if (!best || pass.untangle.remainingPairs < best->untangle.remainingPairs) best = std::move(pass);
     }

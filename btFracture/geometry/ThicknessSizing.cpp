@@ -12,10 +12,10 @@
 namespace btfracture {
 namespace {
 
-constexpr double kSamplesPerBase = 3.0;     // sample spacing L / 3
+constexpr double kSamplesPerBase = 3.0;      // sample spacing L / 3
 constexpr std::size_t kMaxSamples = 400000;  // the spacing grows beyond this
-constexpr double kThinBelow = 1.0;          // samples with T >= L ask for nothing
-constexpr double kSiteBelow = 0.9;          // sites only where h < 0.9 L
+constexpr double kThinBelow = 1.0;           // samples with T >= L ask for nothing
+constexpr double kSiteBelow = 0.9;           // sites only where h < 0.9 L
 constexpr double kMinAngle = 10.0 * M_PI / 180.0;
 constexpr double kMaxAngle = 120.0 * M_PI / 180.0;
 
@@ -28,7 +28,8 @@ std::vector<Sample> sampleSurface(const ClosestPointTree& surface, double spacin
     const TriangleMesh& mesh = surface.mesh();
     auto subdivisions = [&](int t, double h) {
         const auto& tri = mesh.triangles[t];
-        const Eigen::Vector3d &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
+        const Eigen::Vector3d &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]],
+                              &c = mesh.vertices[tri[2]];
         const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
         return std::max(1, static_cast<int>(std::ceil(longest / h)));
     };
@@ -43,7 +44,8 @@ std::vector<Sample> sampleSurface(const ClosestPointTree& surface, double spacin
         const Eigen::Vector3d& n = surface.triangleNormal(t);
         if (n.isZero()) continue;
         const auto& tri = mesh.triangles[t];
-        const Eigen::Vector3d &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
+        const Eigen::Vector3d &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]],
+                              &c = mesh.vertices[tri[2]];
         const int k = subdivisions(t, spacing);
         auto add = [&](double u, double v) { samples.push_back({a + u / k * (b - a) + v / k * (c - a), n}); };
         for (int i = 0; i < k; ++i)
@@ -71,7 +73,8 @@ public:
         for (std::size_t first = 0; first < keyed_.size();) {
             std::size_t last = first;
             own.clear();
-            while (last < keyed_.size() && keyed_[last].first == keyed_[first].first) own.push_back(keyed_[last++].second);
+            while (last < keyed_.size() && keyed_[last].first == keyed_[first].first)
+                own.push_back(keyed_[last++].second);
             const Eigen::Vector3i c = cellOfKey(keyed_[first].first);
             near.clear();
             for (int dz = -1; dz <= 1; ++dz)

@@ -25,7 +25,7 @@ namespace btfracture {
 
 struct ThicknessSizingOptions {
     double sagFraction = 0.5;     // tau: largest chord sag as a fraction of the local thickness
-    double smallestFactor = 0.2;   // no site asks for less than this times L
+    double smallestFactor = 0.2;  // no site asks for less than this times L
 };
 
 // Sizing sites (EdgeLengthField::setSites, referenceBase = baseLength) of `surface`'s mesh

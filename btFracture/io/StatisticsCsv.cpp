@@ -29,8 +29,10 @@ StatisticsCsv::StatisticsCsv(std::string path, bool wallTimes)
     if (!out_) throw Error("cannot create statistics file '" + path_ + "'");
     out_ << "event,step,time_s,body,contacts,impulse_Ns,contact_duration_s,method,bem_triangles,crack_"
             "triangles,"
-            "fragments,fragment_names,fracture_wall_s,swap_wall_s,ke_body_J,ke_partners_J,ke_swap_J,ke_separated_J,"
-            "pe_gain_swap_J,pe_gain_separated_J,ke_replay_J,ke_following_max_J,following_steps,world_energy_before_J,world_energy_gain_J,"
+            "fragments,fragment_names,fracture_wall_s,swap_wall_s,ke_body_J,ke_partners_J,ke_swap_J,ke_"
+            "separated_J,"
+            "pe_gain_swap_J,pe_gain_separated_J,ke_replay_J,ke_following_max_J,following_steps,world_energy_"
+            "before_J,world_energy_gain_J,"
             "energy_added_fraction\n";
     out_.flush();
 }
@@ -57,11 +59,11 @@ void StatisticsCsv::add(const FractureEventRecord& r) {
         out_ << ',';
     if (r.hasEnergy) {
         const FractureEnergyAudit& e = r.energy;
-        out_ << ',' << number(e.bodyKinetic) << ',' << number(e.partnersKinetic) << ',' << number(e.swapKinetic)
-             << ',' << number(e.separatedKinetic) << ',' << number(e.swapPotentialGain) << ','
-             << number(e.separatedPotentialGain) << ',' << number(e.replayKinetic) << ','
-             << number(e.followingKinetic) << ',' << e.followingSteps << ',' << number(e.worldBefore) << ','
-             << number(e.worldGain) << ',' << number(e.addedFraction());
+        out_ << ',' << number(e.bodyKinetic) << ',' << number(e.partnersKinetic) << ','
+             << number(e.swapKinetic) << ',' << number(e.separatedKinetic) << ','
+             << number(e.swapPotentialGain) << ',' << number(e.separatedPotentialGain) << ','
+             << number(e.replayKinetic) << ',' << number(e.followingKinetic) << ',' << e.followingSteps << ','
+             << number(e.worldBefore) << ',' << number(e.worldGain) << ',' << number(e.addedFraction());
     } else {
         out_ << ",,,,,,,,,,,,";
     }

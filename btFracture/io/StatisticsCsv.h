@@ -16,10 +16,10 @@ namespace btfracture {
 struct FractureEventRecord {
     std::uint64_t worldEvent = 0;  // the world's event counter (FractureEventInfo::event)
     std::uint64_t step = 0;        // the world's internal Bullet step at the event
-    double time = 0.0;       // simulated time at the start of that step [s]
-    std::string body;        // the body that broke
-    int contacts = 0;        // contacts that loaded it
-    double impulse = 0.0;    // summed normal contact impulse on it [N s]
+    double time = 0.0;             // simulated time at the start of that step [s]
+    std::string body;              // the body that broke
+    int contacts = 0;              // contacts that loaded it
+    double impulse = 0.0;          // summed normal contact impulse on it [N s]
     // Hertz contact duration t_c that turned impulses into tractions (§5.1); the longest over the
     // contacts [s].
     double contactDuration = 0.0;

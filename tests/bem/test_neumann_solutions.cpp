@@ -255,15 +255,17 @@ TEST(NeumannSolution, SeveralClosedSurfacesAreRejectedBeforeAnySolve) {
         for (const Eigen::Vector3d& v : inner.vertices)
             mesh.vertices.push_back(cavity ? v : Eigen::Vector3d(v + Eigen::Vector3d(2.0, 0.0, 0.0)));
         for (const auto& t : inner.triangles)
-            mesh.triangles.push_back(cavity ? std::array<int, 3>{t[0] + offset, t[2] + offset, t[1] + offset}
-                                            : std::array<int, 3>{t[0] + offset, t[1] + offset, t[2] + offset});
+            mesh.triangles.push_back(cavity
+                                         ? std::array<int, 3>{t[0] + offset, t[2] + offset, t[1] + offset}
+                                         : std::array<int, 3>{t[0] + offset, t[1] + offset, t[2] + offset});
         mesh.name = cavity ? "hollow-sphere" : "two-spheres";
         try {
             const ElasticSolver solver(SurfaceMesh(mesh), kMaterial);
             FAIL() << mesh.name << " accepted";
         } catch (const Error& e) {
             const std::string what = e.what();
-            EXPECT_NE(what.find(mesh.name + ": bounded by 2 separate closed surfaces"), std::string::npos) << what;
+            EXPECT_NE(what.find(mesh.name + ": bounded by 2 separate closed surfaces"), std::string::npos)
+                << what;
             EXPECT_NE(what.find("cavities are not supported"), std::string::npos) << what;
             EXPECT_EQ(what.find("degenerate"), std::string::npos) << what;
         }

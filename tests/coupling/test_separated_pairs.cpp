@@ -52,8 +52,9 @@ struct CountingConfiguration : btDefaultCollisionConfiguration {
     btGjkEpaPenetrationDepthSolver solver;
     CountingCreateFunc counting{&solver};
     btCollisionAlgorithmCreateFunc* getCollisionAlgorithmCreateFunc(int type0, int type1) override {
-        btCollisionAlgorithmCreateFunc* own = btDefaultCollisionConfiguration::getCollisionAlgorithmCreateFunc(
-            CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE);
+        btCollisionAlgorithmCreateFunc* own =
+            btDefaultCollisionConfiguration::getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE,
+                                                                             CONVEX_HULL_SHAPE_PROXYTYPE);
         btCollisionAlgorithmCreateFunc* func =
             btDefaultCollisionConfiguration::getCollisionAlgorithmCreateFunc(type0, type1);
         return func == own ? &counting : func;
@@ -101,14 +102,16 @@ struct DiagonalCubes {
         std::vector<btManifoldPoint> points;
         for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
             const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
-            for (int p = 0; p < manifold->getNumContacts(); ++p) points.push_back(manifold->getContactPoint(p));
+            for (int p = 0; p < manifold->getNumContacts(); ++p)
+                points.push_back(manifold->getContactPoint(p));
         }
         return points;
     }
     int pairs() { return broadphase.getOverlappingPairCache()->getNumOverlappingPairs(); }
 };
 
-void expectSamePoints(const std::vector<btManifoldPoint>& got, const std::vector<btManifoldPoint>& want, int pass) {
+void expectSamePoints(const std::vector<btManifoldPoint>& got, const std::vector<btManifoldPoint>& want,
+                      int pass) {
     ASSERT_EQ(got.size(), want.size()) << "pass " << pass;
     for (std::size_t i = 0; i < got.size(); ++i)
         for (int k = 0; k < 3; ++k) {
@@ -155,7 +158,8 @@ TEST(SeparatedConvexPairs, ApproachingPairGetsItsContactOnTheSamePass) {
             plain.move(motion.step, motion.turn);
             cached.move(motion.step, motion.turn);
         }
-        EXPECT_GE(firstContact, 5) << "the pair must start apart for several passes (turn " << motion.turn << ")";
+        EXPECT_GE(firstContact, 5) << "the pair must start apart for several passes (turn " << motion.turn
+                                   << ")";
         EXPECT_LT(cached.config.counting.calls, plain.config.counting.calls);
     }
 }

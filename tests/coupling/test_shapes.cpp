@@ -50,8 +50,10 @@ TEST(CollisionShapes, ConvexHullKeepsItsCornerBudget) {
     // Along any axis the budgeted hull + margin reaches within 10 % of the radius of the full one
     // (geometry test HullBudget.RoundChipStaysFaithful).
     for (const btVector3 axis : {btVector3(1, 0, 0), btVector3(0, 1, 0), btVector3(0.6f, 0, 0.8f)}) {
-        const double a = double(static_cast<const btConvexShape*>(budgeted->shape())->localGetSupportingVertex(axis).dot(axis));
-        const double b = double(static_cast<const btConvexShape*>(full->shape())->localGetSupportingVertex(axis).dot(axis));
+        const double a = double(
+            static_cast<const btConvexShape*>(budgeted->shape())->localGetSupportingVertex(axis).dot(axis));
+        const double b = double(
+            static_cast<const btConvexShape*>(full->shape())->localGetSupportingVertex(axis).dot(axis));
         EXPECT_LE(a, b + 1e-6);
         EXPECT_GT(a, b - 0.10 * 0.05);
     }

@@ -21,8 +21,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,9 +31,9 @@ using namespace btfracture;
 
 namespace {
 
-constexpr double kSize = 0.3;             // largest extent of the scaled mesh [m]
-constexpr double kBallRadius = 0.04;      // steel ball [m], 2.1 kg
-constexpr double kStep = 1.0 / 1000.0;    // [s]
+constexpr double kSize = 0.3;           // largest extent of the scaled mesh [m]
+constexpr double kBallRadius = 0.04;    // steel ball [m], 2.1 kg
+constexpr double kStep = 1.0 / 1000.0;  // [s]
 constexpr int kSteps = 40;
 
 // The closed parts of a mesh (triangles joined by shared vertices), largest first.
@@ -62,8 +62,9 @@ std::vector<TriangleMesh> parts(const TriangleMesh& mesh) {
         }
         part.triangles.push_back(corners);
     }
-    std::stable_sort(out.begin(), out.end(),
-                     [](const TriangleMesh& a, const TriangleMesh& b) { return a.triangles.size() > b.triangles.size(); });
+    std::stable_sort(out.begin(), out.end(), [](const TriangleMesh& a, const TriangleMesh& b) {
+        return a.triangles.size() > b.triangles.size();
+    });
     return out;
 }
 
@@ -128,7 +129,8 @@ int piecesAfterImpact(const TriangleMesh& mesh, double speed) {
     Pieces listener;
     listener.original = &body;
     world.addFractureListener(&listener);
-    for (int i = 0; i < kSteps && listener.pieces == 0; ++i) world.stepSimulation(btScalar(kStep), 1, btScalar(kStep));
+    for (int i = 0; i < kSteps && listener.pieces == 0; ++i)
+        world.stepSimulation(btScalar(kStep), 1, btScalar(kStep));
     for (btRigidBody* b : {&ball, static_cast<btRigidBody*>(&body), &ground})
         if (b->isInWorld()) world.removeRigidBody(b);
     return listener.pieces;
@@ -163,7 +165,8 @@ TEST(ShippedMesh, ListCoversEveryShippedMeshButTheTeapot) {
     for (const auto& entry : std::filesystem::directory_iterator(BTFRACTURE_MESH_DIR))
         if (entry.path().extension() == ".obj") names.push_back(entry.path().stem().string());
     std::sort(names.begin(), names.end());
-    EXPECT_EQ(names, (std::vector<std::string>{"armadillo", "bowl", "bunny", "column", "fandisk", "spot", "teapot"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"armadillo", "bowl", "bunny", "column", "fandisk", "spot",
+                                               "teapot"}));
 }
 
 }  // namespace

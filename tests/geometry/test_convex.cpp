@@ -102,7 +102,8 @@ TEST(ConvexHull, PointsWithinAGridCellOfAFaceAreNotCorners) {
     const double cell = std::ldexp(0.6, -40);
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    for (int i = 0; i < 200; ++i) points.emplace_back(0.09 * u(rng), 0.19 * u(rng), 0.3 + 0.4 * cell * u(rng));
+    for (int i = 0; i < 200; ++i)
+        points.emplace_back(0.09 * u(rng), 0.19 * u(rng), 0.3 + 0.4 * cell * u(rng));
     expectBoxHull(points, 0.2 * 0.4 * 0.6, 1e-12);
     expectContains(convexHullMesh(points, "box"), points, cell);
 }

@@ -128,7 +128,9 @@ TEST(Remesh, EveryShippedMeshAtOneThousandTriangles) {
 // within 2 mm of its side planes |x| = 0.3, |y| = 0.2) and of those in the middle of its faces
 // (both ends more than 5 cm inside the rim).
 std::pair<double, double> paneEdgeLengths(const TriangleMesh& mesh) {
-    auto inset = [](const Eigen::Vector3d& p) { return std::min(0.3 - std::abs(p.x()), 0.2 - std::abs(p.y())); };
+    auto inset = [](const Eigen::Vector3d& p) {
+        return std::min(0.3 - std::abs(p.x()), 0.2 - std::abs(p.y()));
+    };
     double rim = 0.0, face = 0.0;
     int rimEdges = 0, faceEdges = 0;
     for (const auto& t : mesh.triangles)
@@ -160,9 +162,10 @@ TEST(Remesh, SixMillimetrePaneWithinThreeThousandTriangles) {
     const auto [rim, face] = paneEdgeLengths(output);
     EXPECT_LT(rim, 0.015);       // at most 2.5 times the thickness (measured 14.3 mm)
     EXPECT_GT(face, 1.3 * rim);  // the faces keep longer edges (measured 21.3 mm)
-    std::printf("  6 mm pane: %d triangles, %d intersecting pairs, min angle %.1f deg, mean edge on the rim "
-                "%.4f m, in the faces %.4f m\n",
-                quality.triangleCount, defects.intersectingPairs, quality.minAngleDegrees, rim, face);
+    std::printf(
+        "  6 mm pane: %d triangles, %d intersecting pairs, min angle %.1f deg, mean edge on the rim "
+        "%.4f m, in the faces %.4f m\n",
+        quality.triangleCount, defects.intersectingPairs, quality.minAngleDegrees, rim, face);
     RemeshOptions uniform;
     uniform.thicknessSizing = RemeshOptions::ThicknessSizing::Never;
     const TriangleMesh plain = remeshForBem(pane, 3000, uniform);

@@ -192,12 +192,13 @@ TEST_P(Scenario, BreaksWhereExpectedConservingVolumeAndMomentum) {
         EXPECT_LT(e.momentumError, 1e-4) << expect.scene << " at t = " << e.time;
         ASSERT_TRUE(e.hasEnergy) << expect.scene << " at t = " << e.time;
         const FractureEnergyAudit& k = e.energy;
-        std::printf("%s at t = %.4f s: %s kinetic energy [J] body %.4g, partners %.4g, swap %.4g, separated %.4g, "
-                    "replay %.4g, following max %.4g (%d steps); potential gain swap %.3g, separated %.3g J; "
-                    "world energy gain %.4g J (%.3g of the start)\n",
-                    expect.scene, e.time, e.body.c_str(), k.bodyKinetic, k.partnersKinetic, k.swapKinetic,
-                    k.separatedKinetic, k.replayKinetic, k.followingKinetic, k.followingSteps, k.swapPotentialGain,
-                    k.separatedPotentialGain, k.worldGain, k.addedFraction());
+        std::printf(
+            "%s at t = %.4f s: %s kinetic energy [J] body %.4g, partners %.4g, swap %.4g, separated %.4g, "
+            "replay %.4g, following max %.4g (%d steps); potential gain swap %.3g, separated %.3g J; "
+            "world energy gain %.4g J (%.3g of the start)\n",
+            expect.scene, e.time, e.body.c_str(), k.bodyKinetic, k.partnersKinetic, k.swapKinetic,
+            k.separatedKinetic, k.replayKinetic, k.followingKinetic, k.followingSteps, k.swapPotentialGain,
+            k.separatedPotentialGain, k.worldGain, k.addedFraction());
         EXPECT_LE(k.addedFraction(), 0.01) << expect.scene << " at t = " << e.time << ": " << e.body;
     }
     if (expect.speedScale != 1.0) return;

@@ -29,13 +29,13 @@ struct FractureEventCheck {
     std::string body;
     double time = 0.0;  // event time [s] (internal step x step length)
     int fragments = 0;
-    int refractureDepth = 0;      // of the parent
-    double massRatio = 0.0;       // sum of fragment masses / parent mass
-    double volumeRatio = 0.0;     // sum of fragment volumes / parent volume
-    double momentumError = 0.0;   // relative, see above
-    std::vector<double> volumes;  // fragment volumes [m^3], in spawn order
-    double engineSeconds = 0.0;   // the fracture engine's time for this event [s]
-    EngineTimings engineTimings;  // ... split into BEM, fracture and geometry
+    int refractureDepth = 0;       // of the parent
+    double massRatio = 0.0;        // sum of fragment masses / parent mass
+    double volumeRatio = 0.0;      // sum of fragment volumes / parent volume
+    double momentumError = 0.0;    // relative, see above
+    std::vector<double> volumes;   // fragment volumes [m^3], in spawn order
+    double engineSeconds = 0.0;    // the fracture engine's time for this event [s]
+    EngineTimings engineTimings;   // ... split into BEM, fracture and geometry
     std::uint64_t worldEvent = 0;  // FractureEventInfo::event
     bool hasEnergy = false;        // the audit arrived
     FractureEnergyAudit energy;
