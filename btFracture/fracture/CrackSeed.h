@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Zlib
 #pragma once
-// Planar disc-shaped crack sheets: the initiation seeds (one ring: a hexagon inside the body, or
-// half of one on its surface) and, with more rings, penny-shaped and semicircular test cracks.
+// Planar disc-shaped crack sheets: the initiation seeds (a one-ring hexagon inside the body, or a
+// two-ring half-hexagon on its surface) and, with more rings, penny-shaped and semicircular test
+// cracks.
 #include <btFracture/bem/CrackMesh.h>
 
 #include <Eigen/Core>

@@ -231,14 +231,9 @@ SemicircularCrackResult solveSemicircularCrack(int rings, const Material& materi
     fracture.beginEvent(uniformStressTractions(mesh, stress));
     const std::vector<FrontSifs> sifs = fracture.frontSifs();
     if (sifs.empty()) throw Error("semicircular crack: the crack has no front");
-    const auto deepest =
-        std::max_element(sifs.begin(), sifs.end(), [&](const FrontSifs& x, const FrontSifs& y) {
-            return (x.position + mesh.offset()).x() < (y.position + mesh.offset()).x();
-        });
-    const auto shallowest =
-        std::min_element(sifs.begin(), sifs.end(), [&](const FrontSifs& x, const FrontSifs& y) {
-            return (x.position + mesh.offset()).x() < (y.position + mesh.offset()).x();
-        });
+    const auto [shallowest, deepest] = std::minmax_element(
+        sifs.begin(), sifs.end(),
+        [](const FrontSifs& x, const FrontSifs& y) { return x.position.x() < y.position.x(); });
     SemicircularCrackResult out;
     out.deepestKI = deepest->KI;
     out.surfaceKI = shallowest->KI;
