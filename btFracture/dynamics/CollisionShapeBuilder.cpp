@@ -5,10 +5,10 @@
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/dynamics/BulletEigen.h>
+#include <btFracture/dynamics/GraphHullShape.h>
 #include <btFracture/geometry/HullSimplification.h>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
-#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 #include <BulletCollision/Gimpact/btGImpactShape.h>
 #include <HACD/hacdHACD.h>
@@ -49,12 +49,23 @@ std::string meshName(const TriangleMesh& mesh) {
     return mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name;
 }
 
-// A btConvexHullShape whose hull is the hull of `points` shrunk by `margin` (clamped by Bullet
+// A hull shape (GraphHullShape) with these corners and margin.
+std::unique_ptr<GraphHullShape> hullShape(const std::vector<Eigen::Vector3d>& corners, double margin) {
+    std::vector<btVector3> points;
+    points.reserve(corners.size());
+    for (const auto& p : corners) points.push_back(toBullet(p));
+    auto shape = std::make_unique<GraphHullShape>(&points[0].x(), static_cast<int>(points.size()),
+                                                  static_cast<int>(sizeof(btVector3)));
+    shape->setMargin(btScalar(margin));
+    shape->recalcLocalAabb();  // the cached box includes the margin
+    return shape;
+}
+
+// A hull shape whose hull is the hull of `points` shrunk by `margin` (clamped by Bullet
 // to a quarter of the inradius); returns its collision geometry (shrunk points + actual margin),
 // or nullptr when the hull is flat or degenerate (fewer than 4 vertices).
-std::unique_ptr<btConvexHullShape> shrunkHull(const std::vector<Eigen::Vector3d>& points, double margin,
-                                              int maxVertices, const std::string& name,
-                                              ConvexPolytope& piece) {
+std::unique_ptr<GraphHullShape> shrunkHull(const std::vector<Eigen::Vector3d>& points, double margin,
+                                           int maxVertices, const std::string& name, ConvexPolytope& piece) {
     std::vector<double> coords;
     coords.reserve(3 * points.size());
     for (const auto& p : points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
@@ -72,12 +83,8 @@ std::unique_ptr<btConvexHullShape> shrunkHull(const std::vector<Eigen::Vector3d>
     corners.reserve(static_cast<std::size_t>(hull.vertices.size()));
     for (int i = 0; i < hull.vertices.size(); ++i) corners.push_back(toEigen(hull.vertices[i]));
     piece.points = budgetHullPoints(corners, maxVertices);
-    auto shape = std::make_unique<btConvexHullShape>();
-    for (const auto& p : piece.points) shape->addPoint(toBullet(p), false);
-    shape->setMargin(btScalar(actualMargin));
-    shape->recalcLocalAabb();
     piece.margin = actualMargin;
-    return shape;
+    return hullShape(piece.points, actualMargin);
 }
 
 // HACD clusters of the mesh as point sets (HACD works in its own normalised [0, 1000] frame
@@ -130,11 +137,7 @@ void CollisionShapeStorage::replacePieces(std::vector<ConvexPolytope> pieces) {
     std::vector<std::unique_ptr<btCollisionShape>> hulls;
     for (const ConvexPolytope& piece : pieces) {
         if (piece.points.size() < 4) throw Error("collision shape: a replacement convex piece has no volume");
-        auto hull = std::make_unique<btConvexHullShape>();
-        for (const auto& p : piece.points) hull->addPoint(toBullet(p), false);
-        hull->setMargin(btScalar(piece.margin));
-        hull->recalcLocalAabb();
-        hulls.push_back(std::move(hull));
+        hulls.push_back(hullShape(piece.points, piece.margin));
     }
     if (kind_ == CollisionShapeKind::ConvexHull) {
         impl_->root = std::move(hulls.front());

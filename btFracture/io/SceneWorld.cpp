@@ -7,6 +7,7 @@
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/dynamics/FiniteState.h>
+#include <btFracture/dynamics/GraphHullShape.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/geometry/ClosestPointTree.h>
 #include <btFracture/io/CrackFaces.h>
@@ -185,8 +186,8 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
                 if (shift < 0.999 * margin)
                     logf(LogLevel::Info, bodyContext(scene, description), ": hull shrink limited to ", shift,
                          " m (margin ", margin, " m) by the hull's thickness");
-                auto convex = std::make_unique<btConvexHullShape>(&hull.vertices[0].x(), hull.vertices.size(),
-                                                                  sizeof(btVector3));
+                auto convex = std::make_unique<GraphHullShape>(&hull.vertices[0].x(), hull.vertices.size(),
+                                                               sizeof(btVector3));
                 convex->setMargin(shift);
                 storage.shape = std::move(convex);
             } else {
