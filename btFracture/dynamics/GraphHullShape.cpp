@@ -191,4 +191,11 @@ void GraphHullShape::batchedUnitVectorGetSupportingVertexWithoutMargin(const btV
     }
 }
 
+const char* GraphHullShape::serialize(void* dataBuffer, btSerializer* serializer) const {
+    const char* structName = btConvexHullShape::serialize(dataBuffer, serializer);
+    static_cast<btConvexHullShapeData*>(dataBuffer)
+        ->m_convexInternalShapeData.m_collisionShapeData.m_shapeType = CONVEX_HULL_SHAPE_PROXYTYPE;
+    return structName;
+}
+
 }  // namespace btfracture

@@ -19,7 +19,7 @@
 // The shape type is CUSTOM_POLYHEDRAL_SHAPE_TYPE, so that Bullet's non-virtual support switch
 // (which scans CONVEX_HULL_SHAPE_PROXYTYPE inline) calls this class; Bullet's default collision
 // configuration treats it as any other convex shape. It is still a btConvexHullShape
-// (getUnscaledPoints, getNumPoints).
+// (getUnscaledPoints, getNumPoints) and is written to .bullet files as one.
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 
 #include <atomic>
@@ -37,6 +37,9 @@ public:
     void batchedUnitVectorGetSupportingVertexWithoutMargin(const btVector3* directions, btVector3* out,
                                                            int count) const override;
     const char* getName() const override { return "Convex"; }
+    // Serialized as a plain btConvexHullShape (CONVEX_HULL_SHAPE_PROXYTYPE), which Bullet's
+    // importers know.
+    const char* serialize(void* dataBuffer, btSerializer* serializer) const override;
 
     // Corners in the graph (0 when every query scans).
     int graphCorners() const { return static_cast<int>(offsets_.empty() ? 0 : offsets_.size() - 1); }

@@ -4,6 +4,9 @@
 #include <btFracture/dynamics/GraphHullShape.h>
 
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletFileLoader/btBulletFile.h>
+#include <BulletWorldImporter/btBulletWorldImporter.h>
+#include <LinearMath/btSerializer.h>
 
 #include <gtest/gtest.h>
 
@@ -107,4 +110,28 @@ TEST(GraphHullShape, FewOrFlatPointsScan) {
     const std::vector<btVector3> few(flat.begin(), flat.begin() + 6);
     const GraphHullShape small(&few[0].x(), static_cast<int>(few.size()), sizeof(btVector3));
     EXPECT_EQ(small.graphCorners(), 0);
+}
+
+// A .bullet file holds it as a plain convex hull, with every point.
+TEST(GraphHullShape, SerializedAsAConvexHull) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    std::vector<btVector3> points;
+    for (int i = 0; i < 100; ++i)
+        points.emplace_back(btScalar(uniform(rng)), btScalar(uniform(rng)), btScalar(uniform(rng)));
+    GraphHullShape graph(&points[0].x(), static_cast<int>(points.size()), sizeof(btVector3));
+    btDefaultSerializer serializer;
+    serializer.startSerialization();
+    graph.serializeSingleShape(&serializer);
+    serializer.finishSerialization();
+    bParse::btBulletFile file(
+        reinterpret_cast<char*>(const_cast<unsigned char*>(serializer.getBufferPointer())),
+        serializer.getCurrentBufferSize());
+    btBulletWorldImporter importer;
+    importer.setVerboseMode(0);
+    ASSERT_TRUE(importer.loadFileFromMemory(&file));
+    ASSERT_EQ(importer.getNumCollisionShapes(), 1);
+    const btCollisionShape* shape = importer.getCollisionShapeByIndex(0);
+    ASSERT_EQ(shape->getShapeType(), CONVEX_HULL_SHAPE_PROXYTYPE);
+    EXPECT_EQ(static_cast<const btConvexHullShape*>(shape)->getNumPoints(), graph.getNumPoints());
 }
