@@ -134,4 +134,5 @@ TEST(GraphHullShape, SerializedAsAConvexHull) {
     const btCollisionShape* shape = importer.getCollisionShapeByIndex(0);
     ASSERT_EQ(shape->getShapeType(), CONVEX_HULL_SHAPE_PROXYTYPE);
     EXPECT_EQ(static_cast<const btConvexHullShape*>(shape)->getNumPoints(), graph.getNumPoints());
+    importer.deleteAllData();  // the importer owns what it made but does not free it
 }
