@@ -4,11 +4,12 @@
 // the body frame (centre of mass, principal axes), plus the data the shapes point into.
 //
 // Shape kinds (paper §5.2; FragmentSpec::Class maps onto them in btFractureDynamicsWorld):
-//  - ConvexHull: GraphHullShape (a btConvexHullShape with graph-walking support). Its hull is shrunk by the collision margin
-//    (btConvexHullComputer shrink) so that hull + margin matches the mesh instead of bulging out
-//    by one margin: two fragments that share a cut face then touch instead of overlapping. With
-//    options.hullMaxVertices > 0 at most that many of the shrunk hull's corners are kept (every
-//    hull, also the pieces of a decomposition).
+//  - ConvexHull: GraphHullShape (a btConvexHullShape whose support queries walk its corner
+//    graph). Its hull is shrunk by the collision margin (btConvexHullComputer shrink) so that
+//    hull + margin matches the mesh instead of bulging out by one margin: two fragments that
+//    share a cut face then touch instead of overlapping. With options.hullMaxVertices > 0 at
+//    most that many of the shrunk hull's corners are kept (every hull, also the pieces of a
+//    decomposition).
 //  - ConvexDecomposition: btCompoundShape of shrunk convex hulls of HACD clusters (Bullet's
 //    libHACD). Meshes above options.decompositionTriangleLimit get a GImpactMesh instead.
 //  - GImpactMesh: btGImpactMeshShape over the triangles (what FractureRB used); the dispatcher
