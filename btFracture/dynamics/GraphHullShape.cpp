@@ -67,9 +67,7 @@ GraphHullShape::GraphHullShape(const btScalar* points, int count, int stride)
         if (isCorner[static_cast<std::size_t>(i)]) continue;
         int nearest = 0;
         for (int c = 1; c < corners; ++c)
-            if ((p[pointIndex_[static_cast<std::size_t>(c)]] - p[i]).length2() <
-                (p[pointIndex_[static_cast<std::size_t>(nearest)]] - p[i]).length2())
-                nearest = c;
+            if ((corners_[c] - p[i]).length2() < (corners_[nearest] - p[i]).length2()) nearest = c;
         shadows[static_cast<std::size_t>(nearest)].push_back(i);
         extras_.push_back(i);
     }
@@ -96,11 +94,10 @@ GraphHullShape::GraphHullShape(const btScalar* points, int count, int stride)
     for (int axis = 0; axis < 3; ++axis)
         for (int sign = 0; sign < 2; ++sign) {
             int best = 0;
-            for (int c = 1; c < corners; ++c) {
-                const btScalar a = p[pointIndex_[static_cast<std::size_t>(c)]][axis],
-                               b = p[pointIndex_[static_cast<std::size_t>(best)]][axis];
-                if (sign == 0 ? a > b : a < b) best = c;
-            }
+            for (int c = 1; c < corners; ++c)
+                if (sign == 0 ? corners_[c][axis] > corners_[best][axis]
+                              : corners_[c][axis] < corners_[best][axis])
+                    best = c;
             axisExtreme_[2 * axis + sign] = best;
         }
 }
@@ -113,7 +110,7 @@ int GraphHullShape::climb(const btVector3& d) const {
     int v = axisExtreme_[2 * axis + (d[axis] < 0 ? 1 : 0)];
     btScalar best = value(v);
     const int cached = last_.load(std::memory_order_relaxed);
-    if (cached != v && cached < graphCorners()) {
+    if (cached != v) {
         const btScalar c = value(cached);
         if (c > best) v = cached, best = c;
     }

@@ -29,6 +29,22 @@ void expectSameSupport(const btConvexHullShape& scan, const GraphHullShape& grap
         << ")";
 }
 
+// The shape of `points` (GraphHullShape, or btConvexHullShape for Bullet's scan).
+template <class Shape>
+Shape shapeOf(const std::vector<btVector3>& points) {
+    return Shape(&points[0].x(), static_cast<int>(points.size()), sizeof(btVector3));
+}
+
+// `count` points uniform in [-1, 1]^3.
+std::vector<btVector3> pointsInCube(int count, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    std::vector<btVector3> points;
+    for (int i = 0; i < count; ++i)
+        points.emplace_back(btScalar(uniform(rng)), btScalar(uniform(rng)), btScalar(uniform(rng)));
+    return points;
+}
+
 // Directions that meet ties: the axes, the diagonals and every point's own direction.
 std::vector<btVector3> probeDirections(const std::vector<btVector3>& points, std::mt19937& rng) {
     std::vector<btVector3> directions;
@@ -52,8 +68,8 @@ TEST(GraphHullShape, SameSupportAsTheScanOnARoundHull) {
         btVector3 p(btScalar(normal(rng)), btScalar(normal(rng)), btScalar(0.3 * normal(rng)));
         points.push_back(p.normalized() * btScalar(0.05));  // corners of a flattened sphere
     }
-    const btConvexHullShape scan(&points[0].x(), static_cast<int>(points.size()), sizeof(btVector3));
-    const GraphHullShape graph(&points[0].x(), static_cast<int>(points.size()), sizeof(btVector3));
+    const auto scan = shapeOf<btConvexHullShape>(points);
+    const auto graph = shapeOf<GraphHullShape>(points);
     ASSERT_GT(graph.graphCorners(), 300);
     EXPECT_EQ(graph.getShapeType(), CUSTOM_POLYHEDRAL_SHAPE_TYPE);
     for (const auto& d : probeDirections(points, rng)) expectSameSupport(scan, graph, d);
@@ -70,21 +86,18 @@ TEST(GraphHullShape, TiesResolveToTheScansFirstPoint) {
                 points.emplace_back(btScalar(0.1 * x), btScalar(0.2 * y), btScalar(0.05 * z));
     for (int i = 0; i < 20; ++i) points.push_back(points[static_cast<std::size_t>(i * 6)]);
     std::shuffle(points.begin(), points.end(), rng);
-    const btConvexHullShape scan(&points[0].x(), static_cast<int>(points.size()), sizeof(btVector3));
-    const GraphHullShape graph(&points[0].x(), static_cast<int>(points.size()), sizeof(btVector3));
+    const auto scan = shapeOf<btConvexHullShape>(points);
+    const auto graph = shapeOf<GraphHullShape>(points);
     ASSERT_EQ(graph.graphCorners(), 8);
     for (const auto& d : probeDirections(points, rng)) expectSameSupport(scan, graph, d);
     expectSameSupport(scan, graph, btVector3(0, 0, 0));
 }
 
 TEST(GraphHullShape, ScaledShapeAndBatchedQueries) {
-    std::mt19937 rng(3);
-    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-    std::vector<btVector3> points;
-    for (int i = 0; i < 300; ++i)
-        points.emplace_back(btScalar(uniform(rng)), btScalar(uniform(rng)), btScalar(uniform(rng)));
-    btConvexHullShape scan(&points[0].x(), static_cast<int>(points.size()), sizeof(btVector3));
-    GraphHullShape graph(&points[0].x(), static_cast<int>(points.size()), sizeof(btVector3));
+    const std::vector<btVector3> points = pointsInCube(300, 3);
+    std::mt19937 rng(13);
+    auto scan = shapeOf<btConvexHullShape>(points);
+    auto graph = shapeOf<GraphHullShape>(points);
     const btVector3 scaling(2.0, 0.5, 1.5);
     scan.setLocalScaling(scaling);
     graph.setLocalScaling(scaling);
@@ -103,23 +116,19 @@ TEST(GraphHullShape, FewOrFlatPointsScan) {
     std::vector<btVector3> flat;
     for (int i = 0; i < 40; ++i)
         flat.emplace_back(btScalar(std::cos(0.3 * i)), btScalar(std::sin(0.3 * i)), btScalar(0));
-    const GraphHullShape graph(&flat[0].x(), static_cast<int>(flat.size()), sizeof(btVector3));
-    const btConvexHullShape scan(&flat[0].x(), static_cast<int>(flat.size()), sizeof(btVector3));
+    const auto graph = shapeOf<GraphHullShape>(flat);
+    const auto scan = shapeOf<btConvexHullShape>(flat);
     EXPECT_EQ(graph.graphCorners(), 0);
     expectSameSupport(scan, graph, btVector3(0.3, 0.9, 0.1));
     const std::vector<btVector3> few(flat.begin(), flat.begin() + 6);
-    const GraphHullShape small(&few[0].x(), static_cast<int>(few.size()), sizeof(btVector3));
+    const auto small = shapeOf<GraphHullShape>(few);
     EXPECT_EQ(small.graphCorners(), 0);
 }
 
 // A .bullet file holds it as a plain convex hull, with every point.
 TEST(GraphHullShape, SerializedAsAConvexHull) {
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-    std::vector<btVector3> points;
-    for (int i = 0; i < 100; ++i)
-        points.emplace_back(btScalar(uniform(rng)), btScalar(uniform(rng)), btScalar(uniform(rng)));
-    GraphHullShape graph(&points[0].x(), static_cast<int>(points.size()), sizeof(btVector3));
+    const std::vector<btVector3> points = pointsInCube(100, 5);
+    auto graph = shapeOf<GraphHullShape>(points);
     btDefaultSerializer serializer;
     serializer.startSerialization();
     graph.serializeSingleShape(&serializer);
