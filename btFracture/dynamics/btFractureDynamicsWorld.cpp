@@ -13,6 +13,7 @@
 #include <btFracture/dynamics/HertzContact.h>
 #include <btFracture/dynamics/NewPairMultipoint.h>
 #include <btFracture/dynamics/SeparatedConvexPairs.h>
+#include <btFracture/dynamics/SweepCandidateFilter.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/geometry/ConvexHull.h>
 
@@ -389,6 +390,16 @@ void btFractureDynamicsWorld::setEnergyAuditSteps(int steps) {
     if (steps < 0)
         throw Error("btFractureDynamicsWorld: energy audit steps must be >= 0, not " + std::to_string(steps));
     energyAuditSteps_ = steps;
+}
+
+void btFractureDynamicsWorld::integrateTransforms(btScalar timeStep) {
+    SweepCandidateFilter filter(*getBroadphase()->getOverlappingPairCache(), timeStep);
+    btDiscreteDynamicsWorld::integrateTransforms(timeStep);
+}
+
+void btFractureDynamicsWorld::createPredictiveContacts(btScalar timeStep) {
+    SweepCandidateFilter filter(*getBroadphase()->getOverlappingPairCache(), timeStep);
+    btDiscreteDynamicsWorld::createPredictiveContacts(timeStep);
 }
 
 void btFractureDynamicsWorld::internalSingleStepSimulation(btScalar timeStep) {

@@ -137,6 +137,9 @@ public:
 protected:
     void internalSingleStepSimulation(btScalar timeStep) override;
     void updateActivationState(btScalar timeStep) override;
+    // Bullet's CCD sweeps, with the candidates they cannot hit left out (SweepCandidateFilter).
+    void integrateTransforms(btScalar timeStep) override;
+    void createPredictiveContacts(btScalar timeStep) override;
 
 private:
     struct Event;

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: Zlib
+#include <btFracture/dynamics/SweepCandidateFilter.h>
+
+#include <BulletCollision/CollisionShapes/btCollisionShape.h>
+#include <BulletDynamics/Dynamics/btRigidBody.h>
+#include <LinearMath/btTransformUtil.h>
+
+#include <algorithm>
+
+namespace btfracture {
+
+namespace {
+
+// btContinuousConvexCollision reports a hit once the gap falls below this [m].
+constexpr btScalar kAdvancementTolerance = btScalar(0.001);
+
+// Squared distance from p to the segment [a, b].
+btScalar squaredDistanceToSegment(const btVector3& p, const btVector3& a, const btVector3& b) {
+    const btVector3 ab = b - a;
+    const btScalar length2 = ab.length2();
+    btScalar t = length2 > btScalar(0) ? (p - a).dot(ab) / length2 : btScalar(0);
+    t = std::clamp(t, btScalar(0), btScalar(1));
+    return (a + ab * t - p).length2();
+}
+
+}  // namespace
+
+SweepCandidateFilter::SweepCandidateFilter(btOverlappingPairCache& cache, btScalar timeStep)
+    : cache_(cache), previous_(cache.getOverlapFilterCallback()), timeStep_(timeStep) {
+    cache_.setOverlapFilterCallback(this);
+}
+
+SweepCandidateFilter::~SweepCandidateFilter() {
+    cache_.setOverlapFilterCallback(previous_);
+}
+
+bool SweepCandidateFilter::needBroadphaseCollision(btBroadphaseProxy* proxy0,
+                                                   btBroadphaseProxy* proxy1) const {
+    if (previous_) {
+        if (!previous_->needBroadphaseCollision(proxy0, proxy1)) return false;
+    } else if (!(proxy0->m_collisionFilterGroup & proxy1->m_collisionFilterMask) ||
+               !(proxy1->m_collisionFilterGroup & proxy0->m_collisionFilterMask)) {
+        return false;
+    }
+    ++queries_;
+    const btRigidBody* swept =
+        btRigidBody::upcast(static_cast<const btCollisionObject*>(proxy1->m_clientObject));
+    const auto* candidate = static_cast<const btCollisionObject*>(proxy0->m_clientObject);
+    if (!swept || !candidate) return true;
+    // The sweep's path as Bullet computes it (btRigidBody::predictIntegratedTransform).
+    btTransform predicted;
+    btTransformUtil::integrateTransform(swept->getWorldTransform(), swept->getLinearVelocity(),
+                                        swept->getAngularVelocity(), timeStep_, predicted);
+    btVector3 centre;
+    btScalar radius;
+    candidate->getCollisionShape()->getBoundingSphere(centre, radius);
+    const btVector3 worldCentre = candidate->getWorldTransform() * centre;
+    const btVector3& from = swept->getWorldTransform().getOrigin();
+    const btVector3& to = predicted.getOrigin();
+    // Rounding slack relative to the lengths involved (float Bullet: 1e-4 of them).
+    const btScalar scale = radius + swept->getCcdSweptSphereRadius() + (to - from).length();
+    const btScalar reach = swept->getCcdSweptSphereRadius() + radius + kAdvancementTolerance +
+                           btScalar(1e-4) * scale + btScalar(1e-6);
+    if (!(radius < btScalar(BT_LARGE_FLOAT)) ||
+        squaredDistanceToSegment(worldCentre, from, to) <= reach * reach)
+        return true;
+    ++rejected_;
+    return false;
+}
+
+}  // namespace btfracture
