@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/SeparatedPairCache.h>
 
+#include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObject.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
 #include <BulletCollision/CollisionShapes/btConvexShape.h>
@@ -39,6 +40,20 @@ btScalar slack(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper
     return btScalar(64 * FLT_EPSILON) * size;
 }
 
+// True when the bodies' broadphase boxes (each the shape's box at its current transform, widened
+// by gContactBreakingThreshold: btCollisionWorld::updateSingleAabb) leave a gap wider than `limit`
+// between the shapes: along an axis where the boxes are g apart (g < 0: they overlap by -g) the
+// shapes are at least g + 2 gContactBreakingThreshold apart.
+bool boxesApart(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b, btScalar limit) {
+    const btBroadphaseProxy* pa = a.getCollisionObject()->getBroadphaseHandle();
+    const btBroadphaseProxy* pb = b.getCollisionObject()->getBroadphaseHandle();
+    if (!pa || !pb) return false;
+    btScalar gap = -BT_LARGE_FLOAT;
+    for (int k = 0; k < 3; ++k)
+        gap = btMax(gap, btMax(pb->m_aabbMin[k] - pa->m_aabbMax[k], pa->m_aabbMin[k] - pb->m_aabbMax[k]));
+    return gap + 2 * gContactBreakingThreshold > limit * btScalar(1.01) + btScalar(1e-6);
+}
+
 // sin of half the angle between two rotations.
 btScalar halfAngleSine(const btQuaternion& from, const btQuaternion& to) {
     const btQuaternion d = to * from.inverse();
@@ -51,6 +66,7 @@ bool SeparatedPairCache::apart(const btCollisionObjectWrapper& a, const btCollis
                                const btPersistentManifold& manifold, btScalar reach) {
     if (manifold.getNumContacts() > 0) return valid_ = false;
     const btScalar limit = manifold.getContactBreakingThreshold() + reach;
+    if (boxesApart(a, b, limit)) return true;
     if (valid_) {
         const bool swapped = a.getCollisionObject() != bodyA_;
         const btTransform& ta = (swapped ? b : a).getWorldTransform();

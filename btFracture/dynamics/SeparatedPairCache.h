@@ -26,9 +26,11 @@ namespace btfracture {
 class SeparatedPairCache {
 public:
     // True when the call for (a, b) at their current transforms may be skipped: `manifold` is
-    // empty and the gap bound exceeds its contact breaking threshold plus `reach`. When the last
-    // bound no longer does, the gap is measured again at the current transforms, along the last
-    // axis and along the line between the bodies' origins. Convex shapes only.
+    // empty and the gap exceeds its contact breaking threshold plus `reach`. First tried: the gap
+    // the bodies' broadphase boxes leave (Bullet widens them by gContactBreakingThreshold); then
+    // the bound from the last measurement; when that no longer holds, the gap is measured again
+    // at the current transforms, along the last axis and along the line between the bodies'
+    // origins. Convex shapes only.
     bool apart(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b,
                const btPersistentManifold& manifold, btScalar reach = 0);
 
