@@ -7,6 +7,7 @@
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/ContactCurvature.h>
+#include <btFracture/dynamics/ContactIslandManager.h>
 #include <btFracture/dynamics/FiniteState.h>
 #include <btFracture/dynamics/FractureEnergy.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
@@ -292,6 +293,7 @@ btFractureDynamicsWorld::btFractureDynamicsWorld(btDispatcher* dispatcher, btBro
 btFractureDynamicsWorld::~btFractureDynamicsWorld() {
     for (auto& body : owned_) btDiscreteDynamicsWorld::removeRigidBody(body.get());
     owned_.clear();
+    if (contactIslands_) m_islandManager = bulletIslands_;  // Bullet frees its own
 }
 
 void btFractureDynamicsWorld::setFractureEngine(std::unique_ptr<FractureEngine> engine) {
@@ -378,6 +380,14 @@ void btFractureDynamicsWorld::setFragmentSleeping(bool enabled, const FragmentSl
             "minimum speed >= 0");
     fragmentSleepingEnabled_ = enabled;
     fragmentSleeping_ = sleeping;
+    if (enabled && !contactIslands_) {
+        contactIslands_ = std::make_unique<ContactIslandManager>();
+        bulletIslands_ = m_islandManager;
+        m_islandManager = contactIslands_.get();
+    } else if (!enabled && contactIslands_) {
+        m_islandManager = bulletIslands_;
+        contactIslands_.reset();
+    }
 }
 
 void btFractureDynamicsWorld::updateActivationState(btScalar timeStep) {

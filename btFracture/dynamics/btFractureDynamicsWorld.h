@@ -33,7 +33,8 @@
 // root of the volume) in a step, with a swept sphere of a fifth of it: small fast chips would
 // otherwise pass through the ground.
 // Opt-in (setFragmentSleeping): fragments sleep by their size (FragmentSleeping.h), thresholds
-// scaled to it, asleep once still for 0.1 s, instead of Bullet's 0.8 m/s and 2 s.
+// scaled to it, asleep once still for 0.1 s, instead of Bullet's 0.8 m/s and 2 s, in islands of
+// touching bodies (ContactIslandManager.h) instead of Bullet's islands of nearby ones.
 // With fracture disabled, no engine, or no btFractureRigidBody added, a step is Bullet's step.
 //
 // Penetration recovery: fragments can start overlapping their neighbours where their convex
@@ -75,6 +76,7 @@
 namespace btfracture {
 
 class btFractureRigidBody;
+class ContactIslandManager;
 class SeparatedConvexPairs;
 
 class btFractureDynamicsWorld : public btDiscreteDynamicsWorld {
@@ -111,8 +113,9 @@ public:
     double splitImpulseDepth() const { return splitImpulseDepth_; }
 
     // Fragments' sleeping thresholds scaled to their size, settled ones asleep after
-    // sleeping.window (FragmentSleeping.h); `enabled` false (the default) keeps the parent's
-    // thresholds and Bullet's global deactivation time.
+    // sleeping.window (FragmentSleeping.h), islands of touching bodies only
+    // (ContactIslandManager.h); `enabled` false (the default) keeps the parent's thresholds,
+    // Bullet's global deactivation time and Bullet's islands.
     void setFragmentSleeping(bool enabled, const FragmentSleeping& sleeping = {});
     bool fragmentSleepingEnabled() const { return fragmentSleepingEnabled_; }
     const FragmentSleeping& fragmentSleeping() const { return fragmentSleeping_; }
@@ -173,6 +176,10 @@ private:
     int energyAuditSteps_ = 20;
     bool fragmentSleepingEnabled_ = false;
     FragmentSleeping fragmentSleeping_;
+    // Islands of touching bodies while fragment sleeping is on; Bullet's own manager is kept in
+    // bulletIslands_ meanwhile and put back.
+    std::unique_ptr<ContactIslandManager> contactIslands_;
+    btSimulationIslandManager* bulletIslands_ = nullptr;
     std::vector<OpenAudit> audits_;  // energy audits still following the world, in event order
 };
 
