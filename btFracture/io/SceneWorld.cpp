@@ -6,16 +6,14 @@
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/Primitives.h>
+#include <btFracture/dynamics/CollisionShapeBuilder.h>
 #include <btFracture/dynamics/FiniteState.h>
-#include <btFracture/dynamics/GraphHullShape.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/geometry/ClosestPointTree.h>
 #include <btFracture/io/CrackFaces.h>
 #include <btFracture/io/MeshReader.h>
 
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
-#include <BulletCollision/Gimpact/btGImpactShape.h>
-#include <LinearMath/btConvexHullComputer.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
@@ -60,11 +58,6 @@ TriangleMesh planeSurface(const Eigen::Vector3d& normal, double offset) {
     return m;
 }
 
-// Collision margin for a mesh body [m].
-double meshMargin(double volume) {
-    return std::min(0.04, 0.02 * std::cbrt(volume));
-}
-
 std::string bodyContext(const Scene& scene, const SceneBody& body) {
     return scene.file + ": body '" + body.name + "'";
 }
@@ -85,10 +78,9 @@ std::unique_ptr<btRigidBody> SceneWorldFactory::createBody(
 struct SceneWorld::Impl {
     // Everything one body's shape points into, kept alive as long as the body.
     struct ShapeStorage {
-        std::vector<btScalar> vertices;
-        std::vector<int> indices;
-        std::unique_ptr<btTriangleIndexVertexArray> meshInterface;
-        std::unique_ptr<btCollisionShape> shape;
+        std::unique_ptr<CollisionShapeStorage> mesh;  // mesh bodies
+        std::unique_ptr<btCollisionShape> shape;      // primitives
+        btCollisionShape* get() const { return mesh ? mesh->shape() : shape.get(); }
     };
 
     Scene scene;
@@ -171,40 +163,14 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
             bodyInShape.translation() = mass.centreOfMass;
             unitDensityInertia = axes.moments;
             body.volume = mass.volume;
-            const double margin = meshMargin(mass.volume);
-            if (shape.collision == SceneMeshCollision::ConvexHull) {
-                // Shrink the hull by the margin so that hull + margin matches the mesh.
-                std::vector<double> coordinates;
-                for (const auto& v : mesh.vertices)
-                    coordinates.insert(coordinates.end(), {v.x(), v.y(), v.z()});
-                btConvexHullComputer hull;
-                const btScalar shift = hull.compute(coordinates.data(), 3 * sizeof(double),
-                                                    static_cast<int>(mesh.vertices.size()),
-                                                    static_cast<btScalar>(margin), btScalar(0.25));
-                if (!(shift > 0) || hull.vertices.size() < 4)
-                    throw Error(bodyContext(scene, description) + ": convex hull of its mesh failed");
-                if (shift < 0.999 * margin)
-                    logf(LogLevel::Info, bodyContext(scene, description), ": hull shrink limited to ", shift,
-                         " m (margin ", margin, " m) by the hull's thickness");
-                auto convex = std::make_unique<GraphHullShape>(&hull.vertices[0].x(), hull.vertices.size(),
-                                                               sizeof(btVector3));
-                convex->setMargin(shift);
-                storage.shape = std::move(convex);
-            } else {
-                for (const auto& v : mesh.vertices)
-                    storage.vertices.insert(storage.vertices.end(),
-                                            {static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()),
-                                             static_cast<btScalar>(v.z())});
-                for (const auto& t : mesh.triangles)
-                    storage.indices.insert(storage.indices.end(), {t[0], t[1], t[2]});
-                storage.meshInterface = std::make_unique<btTriangleIndexVertexArray>(
-                    static_cast<int>(mesh.triangles.size()), storage.indices.data(),
-                    static_cast<int>(3 * sizeof(int)), static_cast<int>(mesh.vertices.size()),
-                    storage.vertices.data(), static_cast<int>(3 * sizeof(btScalar)));
-                auto gimpact = std::make_unique<btGImpactMeshShape>(storage.meshInterface.get());
-                gimpact->setMargin(static_cast<btScalar>(margin));
-                gimpact->updateBound();
-                storage.shape = std::move(gimpact);
+            // A shrunk hull (hull + margin matches the mesh) or a GImpact mesh, as for fragments.
+            const CollisionShapeKind kind = shape.collision == SceneMeshCollision::ConvexHull
+                                                ? CollisionShapeKind::ConvexHull
+                                                : CollisionShapeKind::GImpactMesh;
+            try {
+                storage.mesh = buildCollisionShape(mesh, kind);
+            } catch (const Error& e) {
+                throw Error(bodyContext(scene, description) + ": " + e.what());
             }
             body.surface = std::move(mesh);
             break;
@@ -246,7 +212,7 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
     shapeInWorld.translation() = description.position;
     shapeInWorld.linear() = description.orientation.toRotationMatrix();
 
-    btRigidBody::btRigidBodyConstructionInfo info(static_cast<btScalar>(mass), nullptr, storage.shape.get(),
+    btRigidBody::btRigidBodyConstructionInfo info(static_cast<btScalar>(mass), nullptr, storage.get(),
                                                   toBullet(inertia));
     info.m_startWorldTransform = toBullet(shapeInWorld * bodyInShape);
     std::unique_ptr<btRigidBody> rigidBody = factory.createBody(info, description, body.surface);
