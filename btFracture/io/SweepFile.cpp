@@ -104,7 +104,10 @@ public:
         }
         if (!value.is_object() || value.size() != 1)
             fail(path, "expected a number, {\"uniform\": [low, high]} or {\"choice\": [...]}");
-        const auto& [kind, list] = *value.items().begin();
+        // The object's one entry (not through items(): its iterator is a temporary that a binding
+        // would outlive).
+        const std::string kind = value.begin().key();
+        const Json& list = value.begin().value();
         const std::string where = path + "." + kind;
         if (kind != "uniform" && kind != "choice")
             fail(where, "unknown distribution (expected \"uniform\" or \"choice\")");

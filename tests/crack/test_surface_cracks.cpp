@@ -127,7 +127,8 @@ TEST(SurfaceCrack, GrownFrontEndsOpenOnTheFaces) {
     const int seededMouth = mouthNodes();
     double deepest = 0.0;
     for (int step = 0; step <= 5; ++step) {
-        const FrontSifs& f = midThicknessSifs(fracture.frontSifs(), c, solver.mesh());
+        // A copy: frontSifs() returns a temporary list.
+        const FrontSifs f = midThicknessSifs(fracture.frontSifs(), c, solver.mesh());
         const double depth = (f.position + solver.mesh().offset() - c.origin).dot(c.U);
         const double exact = kEdgeCrackTension * edgeCrackFactor(depth, kEdgeCrackPlateWidth);
         std::printf("grown edge crack, step %d: depth %.4f m, K_I FULL / Tada %.4f\n", step, depth,
