@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/SweepCandidateFilter.h>
 
+#include <btFracture/core/ClosestPoint.h>
+#include <btFracture/dynamics/BulletEigen.h>
+
 #include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <LinearMath/btTransformUtil.h>
-
-#include <algorithm>
 
 namespace btfracture {
 
@@ -13,15 +14,6 @@ namespace {
 
 // btContinuousConvexCollision reports a hit once the gap falls below this [m].
 constexpr btScalar kAdvancementTolerance = btScalar(0.001);
-
-// Squared distance from p to the segment [a, b].
-btScalar squaredDistanceToSegment(const btVector3& p, const btVector3& a, const btVector3& b) {
-    const btVector3 ab = b - a;
-    const btScalar length2 = ab.length2();
-    btScalar t = length2 > btScalar(0) ? (p - a).dot(ab) / length2 : btScalar(0);
-    t = std::clamp(t, btScalar(0), btScalar(1));
-    return (a + ab * t - p).length2();
-}
 
 }  // namespace
 
@@ -61,9 +53,9 @@ bool SweepCandidateFilter::needBroadphaseCollision(btBroadphaseProxy* proxy0,
     const btScalar scale = radius + swept->getCcdSweptSphereRadius() + (to - from).length();
     const btScalar reach = swept->getCcdSweptSphereRadius() + radius + kAdvancementTolerance +
                            btScalar(1e-4) * scale + btScalar(1e-6);
-    if (!(radius < btScalar(BT_LARGE_FLOAT)) ||
-        squaredDistanceToSegment(worldCentre, from, to) <= reach * reach)
-        return true;
+    if (!(radius < btScalar(BT_LARGE_FLOAT))) return true;
+    const Eigen::Vector3d c = toEigen(worldCentre);
+    if ((closestPointOnSegment(c, toEigen(from), toEigen(to)) - c).norm() <= double(reach)) return true;
     ++rejected_;
     return false;
 }
