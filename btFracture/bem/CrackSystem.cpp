@@ -434,11 +434,18 @@ int CrackSystem::update() {
         BorderedCholesky& factor = copy ? *copy : schur_;
         factor.truncate(first3);
         bool dense = wasDense;
-        // Back to Cholesky after a change if the kept part allows it.
-        if (dense && changed > 0 &&
-            factor.extend(denseSchur_.block(0, factor.size(), first3, first3 - factor.size()), 1e-15))
-            dense = false;
+        int indefiniteRows = indefiniteRows_;
+        // Back to Cholesky after a change if the kept part allows it: not while the kept rows still
+        // hold, unchanged, the block whose extension failed (a principal block of a matrix that is
+        // not positive definite is not either).
+        if (dense && changed > 0 && first3 < indefiniteRows) {
+            if (factor.extend(denseSchur_.block(0, factor.size(), first3, first3 - factor.size()), 1e-15))
+                dense = false;
+            else
+                indefiniteRows = first3;
+        }
         if (!dense && !factor.extend(tail, 1e-15)) {
+            indefiniteRows = new3;
             logf(luLogged_ ? LogLevel::Debug : LogLevel::Info, "crack system: the Schur complement of ",
                  total, " crack unknowns is not positive definite; factored by LU from here on");
             luLogged_ = true;
@@ -485,6 +492,7 @@ int CrackSystem::update() {
             lu_ = BorderedLU();
         }
         if (copy) schur_ = std::move(*copy);
+        indefiniteRows_ = dense ? indefiniteRows : 0;
         slots_ = std::move(slots);
         fingerprints_ = std::move(fingerprints);
         assembledUnknowns_ = total;

@@ -75,6 +75,7 @@ private:
     BorderedCholesky schur_;      // S = D - C^T K_R^-1 K^T C; on LU, of S's leading positive definite slots
     Eigen::MatrixXd denseSchur_;  // S in full, once Cholesky failed
     BorderedLU lu_;               // its LU, grown with it
+    int indefiniteRows_ = 0;      // on LU: S's leading rows (factor order) known not positive definite
     int assembledUnknowns_ = 0;
     // The factor's order (slot -> crack unknown): C, D and G are in unknown order.
     std::vector<int> slots_;

@@ -77,6 +77,17 @@ ElasticSolver::ElasticSolver(SurfaceMesh mesh, const Material& material,
              " triangles is ill-conditioned (rcond ", rcond_, "); results may be inaccurate");
 }
 
+double ElasticSolver::strainEnergy(const Eigen::VectorXd& q, const Eigen::VectorXd& u) const {
+    double work = 0.0;
+    for (int t = 0; t < mesh_.triangleCount(); ++t) {
+        const auto& tri = mesh_.triangle(t);
+        const Eigen::Vector3d mean =
+            (u.segment<3>(3 * tri[0]) + u.segment<3>(3 * tri[1]) + u.segment<3>(3 * tri[2])) / 3.0;
+        work += mesh_.area(t) * q.segment<3>(3 * t).dot(mean);
+    }
+    return 0.5 * work;
+}
+
 TractionResultant ElasticSolver::netLoad(const Eigen::VectorXd& q) const {
     const Eigen::Matrix<double, 6, 1> load = netLoadOperator_ * q;
     TractionResultant net{load.head<3>(), load.tail<3>(), 0.0};

@@ -53,6 +53,11 @@ public:
 
     TractionResultant netLoad(const Eigen::VectorXd& tractions) const;
 
+    // Strain energy U = 1/2 integral t.u dA [J] (Clapeyron) of P0 tractions q and nodal
+    // displacements u they produce. (u.K u is not it: K u = (1/2 M - K') q is the Neumann
+    // equation, not the Dirichlet-to-Neumann map.)
+    double strainEnergy(const Eigen::VectorXd& tractions, const Eigen::VectorXd& displacements) const;
+
     const Eigen::MatrixXd& stiffness() const { return operators_.stiffness; }
     const BoundaryOperators& operators() const { return operators_; }
     const Eigen::MatrixXd& regulariser() const { return rigidModes_; }  // T (6 x 3n), Eq. 1-2, unit rows

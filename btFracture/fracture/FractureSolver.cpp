@@ -139,6 +139,23 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
         e.spacing = f.spacing;
         out.push_back(e);
     }
+    // With estimatorEnergyBound, the step's new crack releases at most the strain energy the
+    // tractions store (energyBoundScale).
+    strainEnergy_ = solver_.strainEnergy(tractions_, crackFree_);
+    energyScale_ = 1.0;
+    if (!settings_.estimatorEnergyBound) return out;
+    std::vector<FrontSifs> moving;
+    std::vector<double> toughness;
+    for (const FrontSifs& e : out)
+        if (!isArrested(e.node)) {
+            moving.push_back(e);
+            toughness.push_back(field_.fractureToughness(e.position));
+        }
+    energyScale_ =
+        energyBoundScale(moving, toughness, m.youngsModulus(), m.poissonRatio(), m.compressiveFactor(),
+                         settings_.frontEdgeLength * elementSize_, settings_.minimumSpeed, strainEnergy_);
+    if (energyScale_ < 1.0)
+        for (FrontSifs& e : out) e.KI *= energyScale_, e.KII *= energyScale_, e.KIII *= energyScale_;
     return out;
 }
 
@@ -179,6 +196,11 @@ FractureStepRecord FractureSolver::step(int index) {
              kMaxGeometryFactor / settings_.estimatorGeometryFactor, " times the crack-free surface peak ",
              peakStress_, " Pa (K <= ", kMaxGeometryFactor,
              " sigma_peak sqrt(pi a)); EST used that bound there");
+    record.energyScale = active_ == FractureMethod::Estimated ? energyScale_ : 1.0;
+    if (record.energyScale < 1.0)
+        logf(LogLevel::Info, "fracture: step ", index, ": EST's SIFs scaled by ", record.energyScale,
+             " so that the step's new crack releases no more than the strain energy of the load, ",
+             strainEnergy_, " J");
     if (record.gainLimitedNodes > 0)
         logf(LogLevel::Info, "fracture: step ", index, ": estimatorUpdateGainLimit ",
              settings_.estimatorUpdateGainLimit, " scaled down the SIFs of ", record.gainLimitedNodes, " of ",

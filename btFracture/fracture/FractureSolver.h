@@ -31,6 +31,7 @@ struct FractureStepRecord {
     double maxLoadRatio = 0.0;   // max K_eff / K_c over the front before the step
     int gainLimitedNodes = 0;    // EST: fronts whose SIFs estimatorUpdateGainLimit scaled down
     int stressBoundedNodes = 0;  // EST: fronts whose local stress boundStress scaled down
+    double energyScale = 1.0;    // EST: factor energyBoundScale put on every SIF (1: none)
     double sifSeconds = 0.0, growthSeconds = 0.0;
 };
 
@@ -68,6 +69,10 @@ public:
     int gainLimitedNodes() const { return gainLimited_; }
     // EST: fronts whose local stress the last frontSifs() call bounded (boundStress).
     int stressBoundedNodes() const { return stressBounded_; }
+    // EST: the factor the last frontSifs() call put on every SIF (energyBoundScale; 1: none) and
+    // the strain energy of the event's tractions it used [J].
+    double energyScale() const { return energyScale_; }
+    double strainEnergy() const { return strainEnergy_; }
     FractureStepRecord step(int index);  // one propagation step
 
     // What the high-resolution front (CrackFront.h) tells the coarse sheet after it moved: the
@@ -114,6 +119,7 @@ private:
     Eigen::VectorXd crackFree_;
     double peakStress_ = -1.0;
     int stressBounded_ = 0;
+    double energyScale_ = 1.0, strainEnergy_ = 0.0;
     Eigen::VectorXd leavingOpenings_;  // FULL: per crack node, the §4.3 estimate of its opening
     int gainLimited_ = 0;
     Eigen::VectorXd estimatedOpenings_;  // EST: per crack node, 3 each

@@ -94,4 +94,29 @@ double peakStress(const std::vector<Eigen::Matrix3d>& stresses) {
     return peak;
 }
 
+double energyBoundScale(const std::vector<FrontSifs>& sifs, const std::vector<double>& toughness,
+                        double youngsModulus, double poissonRatio, double compressiveFactor, double step,
+                        double minimumSpeed, double strainEnergy) {
+    const double compliance = (1.0 - poissonRatio * poissonRatio) / youngsModulus;
+    auto released = [&](double kappa) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < sifs.size(); ++i) {
+            FrontSifs f = sifs[i];
+            f.KI *= kappa, f.KII *= kappa, f.KIII *= kappa;
+            const double d =
+                advanceOf(f, toughness[i], compressiveFactor, poissonRatio, step, minimumSpeed).distance;
+            const double K = effectiveK(f.KI, f.KII, f.KIII, poissonRatio);
+            sum += compliance * K * K * f.spacing * d;
+        }
+        return sum;
+    };
+    if (!(released(1.0) > strainEnergy)) return 1.0;
+    double lo = 0.0, hi = 1.0;  // released() grows with kappa: bisect to 1e-6
+    for (int i = 0; i < 20; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (released(mid) > strainEnergy ? hi : lo) = mid;
+    }
+    return lo;
+}
+
 }  // namespace btfracture

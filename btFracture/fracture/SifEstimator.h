@@ -45,4 +45,15 @@ bool boundStress(Eigen::Matrix3d& stress, double peak);
 // Largest principal stress magnitude over `stresses` (e.g. per surface triangle) [Pa].
 double peakStress(const std::vector<Eigen::Matrix3d>& stresses);
 
+// What the load can release: the crack area a step adds, front node i advancing d_i over its
+// spacing s_i (advanceOf), releases sum_i G_i s_i d_i with G = (1 - nu^2) K_eff^2 / E (plane
+// strain). Under the event's fixed tractions that is the growth of the strain energy
+// U = 1/2 integral t.u dA (Clapeyron), which within one step cannot exceed U itself unless the
+// step more than doubles the body's compliance. Returns the factor kappa in (0, 1] by which all
+// SIFs must be scaled (same mode mix, so the same kink) for the release to equal `strainEnergy`
+// [J], or 1 where it stays below; `toughness` [Pa m^(1/2)] per entry of `sifs`, `step` [m].
+double energyBoundScale(const std::vector<FrontSifs>& sifs, const std::vector<double>& toughness,
+                        double youngsModulus, double poissonRatio, double compressiveFactor, double step,
+                        double minimumSpeed, double strainEnergy);
+
 }  // namespace btfracture

@@ -159,6 +159,48 @@ TEST(SifEstimator, EstimatesStayWithinWhatTheLoadCanProduce) {
     EXPECT_EQ(small, 0.5 * before / 100.0);
 }
 
+TEST(SifEstimator, EnergyBoundScalesTheStepToTheStrainEnergy) {
+    // One front node well above its toughness, minimum speed 0: it advances d = h (1 - (K_c/K)^2)
+    // over its spacing s and releases (1 - nu^2)/E K^2 s d = (1 - nu^2)/E s h (K^2 - K_c^2), so
+    // the bound must give (kappa K)^2 = U E / ((1 - nu^2) s h) + K_c^2.
+    const double E = 3.1e9, nu = 0.327, Kc = 1e6, h = 0.01;
+    FrontSifs f;
+    f.frame = FrontFrame{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(),
+                         Eigen::Vector3d::UnitX().cross(Eigen::Vector3d::UnitZ())};
+    f.KI = 1e4 * Kc;  // what EST reads under a ball (README: up to 14,000 K_c)
+    f.spacing = 0.005;
+    const double compliance = (1.0 - nu * nu) / E,
+                 release = compliance * f.spacing * h * (f.KI * f.KI - Kc * Kc);
+    EXPECT_DOUBLE_EQ(energyBoundScale({f}, {Kc}, E, nu, 2.0, h, 0.0, 2.0 * release), 1.0);
+    const double U = 1e-3 * release;
+    const double kappa = energyBoundScale({f}, {Kc}, E, nu, 2.0, h, 0.0, U);
+    const double expected = std::sqrt(U / (compliance * f.spacing * h) + Kc * Kc) / f.KI;
+    EXPECT_NEAR(kappa, expected, 1e-5 * expected);
+    EXPECT_LE(kappa, expected);  // never above the energy
+    // Two nodes at the same K share the energy: each gets half.
+    FrontSifs g = f;
+    g.node = 1;
+    const double both = energyBoundScale({f, g}, {Kc, Kc}, E, nu, 2.0, h, 0.0, 2.0 * U);
+    EXPECT_NEAR(both, expected, 1e-5 * expected);
+}
+
+TEST(FractureSolver, StrainEnergyOfTheLoadIsClapeyronsAndLeavesUniformTensionUnbounded) {
+    // Uniaxial stress sigma in the crack-free slab stores U = sigma^2 V / (2 E); a 1.2 cm crack
+    // growing one step releases about 4 mJ of that 0.19 J, so the energy bound leaves EST's SIFs
+    // as estimated.
+    const Slab s = slab(modeOneStress(), kGrowing);
+    FractureSettings fs = growthSettings(FractureMethod::Estimated);
+    fs.estimatorEnergyBound = true;
+    FractureSolver fracture(*s.solver, MaterialField(kGrowing), fs);
+    addGrowthPreCrack(fracture.cracks());
+    fracture.beginEvent(s.tractions);
+    fracture.frontSifs();
+    const double sigma = modeOneStress()(0, 0), volume = 0.2 * 0.1 * 0.06;
+    const double expected = sigma * sigma * volume / (2.0 * kGrowing.youngsModulus());
+    EXPECT_NEAR(fracture.strainEnergy(), expected, 0.01 * expected);
+    EXPECT_EQ(fracture.energyScale(), 1.0);
+}
+
 TEST(SifEstimator, OpeningFromSifsInvertsTheCorrelationAndClosesUnderCompression) {
     // A hexagon (one ring): the centre is the only opening node, the same distance r behind every
     // front edge. Its opening from K_I (§4.3) must give K_I back through the correlation, with the
