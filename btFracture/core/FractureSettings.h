@@ -41,6 +41,12 @@ struct FractureMethodSettings {
     // independent of the BEM surface (FractureRB's crack mesh size). 0: relative to the BEM mesh
     // (seeds: the seeding triangle's diameter; fronts: the mean BEM triangle diameter).
     double crackElementSize = 0.0;
+    // EST (and HYBRID after its switch): a step's SIFs are scaled down (logged) so that the crack
+    // area the step adds releases no more than the strain energy of the event's tractions
+    // (SifEstimator.h, energyBoundScale). Scene key effects.fracture.<body>.energy_bound. Off by
+    // default: it changes the shipped scenes' outcomes, and the falling_boxes scenario at 0.9x
+    // speeds then ends with a 19 mg chip pressed through the ground (README, Known limits).
+    bool estimatorEnergyBound = false;
     // Throws btfracture::Error "<where>: ..." naming the field and value.
     void validate(const std::string& where) const;
 };
@@ -68,11 +74,6 @@ struct CrackSettings {
     // step that does so logs how many fronts it limited. 0 (the default): no limit; on the
     // accuracy study's scenes no limit runs away (bench/results/README.md).
     double estimatorUpdateGainLimit = 0.0;
-    // EST's SIFs of a step scaled down (logged) so that the crack area the step adds releases no
-    // more than the strain energy of the event's tractions (SifEstimator.h, energyBoundScale).
-    // Off by default: it changes the shipped scenes' outcomes, and the falling_boxes scenario at
-    // 0.9x speeds then ends with a 19 mg chip pressed through the ground (README, Known limits).
-    bool estimatorEnergyBound = false;
     // Throws btfracture::Error "<where>: ..." naming the field and value.
     void validate(const std::string& where) const;
 };

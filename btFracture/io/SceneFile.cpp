@@ -309,12 +309,12 @@ private:
             f.fracturable = value.get<bool>();
             return;
         }
-        requireObject(
-            value, path,
-            "true, false or an object {method, hybrid_threshold, refracture_depth, impulse_threshold, "
-            "material_noise}");
+        requireObject(value, path,
+                      "true, false or an object {method, hybrid_threshold, energy_bound, refracture_depth, "
+                      "impulse_threshold, material_noise}");
         allowOnly(value, path,
-                  {"method", "hybrid_threshold", "refracture_depth", "impulse_threshold", "material_noise"});
+                  {"method", "hybrid_threshold", "energy_bound", "refracture_depth", "impulse_threshold",
+                   "material_noise"});
         f.fracturable = true;
         if (value.contains("method"))
             f.method = parseFractureMethod(text(value["method"], child(path, "method")),
@@ -325,6 +325,12 @@ private:
                      std::string("applies to method \"hybrid\" only (method is \"") + toString(f.method) +
                          "\")");
             f.hybridElementThreshold = integer(value["hybrid_threshold"], child(path, "hybrid_threshold"), 1);
+        }
+        if (value.contains("energy_bound")) {
+            if (f.method == FractureMethod::Full)
+                fail(child(path, "energy_bound"),
+                     "applies to methods \"est\" and \"hybrid\" only (method is \"full\")");
+            f.estimatorEnergyBound = boolean(value["energy_bound"], child(path, "energy_bound"));
         }
         if (value.contains("refracture_depth"))
             f.maxRefractureDepth = integer(value["refracture_depth"], child(path, "refracture_depth"), 0, 20);

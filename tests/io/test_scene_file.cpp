@@ -90,7 +90,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
                   "image": {"width": 320, "height": 200, "projection": "orthographic", "shading": "flat",
                             "view": [0, 1, 0]}},
       "effects": {"outputs": ["png", "csv", "obj"], "seed": 42, "crack_cut": "coarse_sheet",
-                  "fracture": {"pane": {"method": "hybrid", "hybrid_threshold": 3000, "refracture_depth": 2,
+                  "fracture": {"pane": {"method": "hybrid", "hybrid_threshold": 3000, "energy_bound": true, "refracture_depth": 2,
                                         "impulse_threshold": 0.5,
                                         "material_noise": {"amplitude": 0.2, "seed": 7}},
                                "rock": {"method": "est"}}}})",
@@ -103,6 +103,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_DOUBLE_EQ(pane.fracture.crackElementSize, 0.01);
     EXPECT_TRUE(pane.fracture.fracturable);
     EXPECT_EQ(pane.fracture.method, FractureMethod::Hybrid);
+    EXPECT_TRUE(pane.fracture.estimatorEnergyBound);
     EXPECT_EQ(pane.fracture.hybridElementThreshold, 3000);
     EXPECT_EQ(pane.fracture.maxRefractureDepth, 2);
     EXPECT_DOUBLE_EQ(pane.fracture.impulseThreshold, 0.5);
@@ -166,6 +167,10 @@ TEST(SceneFile, BadEffectsNameTheirPath) {
          R"(test.json: effects.fracture.ball.method: expected "full", "est" or "hybrid", got "fast")"},
         {R"("effects": {"fracture": {"ball": {"method": "full", "hybrid_threshold": 10}}})",
          R"(test.json: effects.fracture.ball.hybrid_threshold: applies to method "hybrid" only (method is "full"))"},
+        {R"("effects": {"fracture": {"ball": {"method": "full", "energy_bound": true}}})",
+         R"(test.json: effects.fracture.ball.energy_bound: applies to methods "est" and "hybrid" only (method is "full"))"},
+        {R"("effects": {"fracture": {"ball": {"energy_bound": 1}}})",
+         "test.json: effects.fracture.ball.energy_bound: expected true or false, got 1"},
         {R"("effects": {"fracture": {"ball": {"refracture_depth": 99}}})",
          "test.json: effects.fracture.ball.refracture_depth: expected an integer in [0, 20], got 99"},
         {R"("effects": {"fracture": {"ball": {"material_noise": {"amplitude": 1.5}}}})",
