@@ -43,10 +43,8 @@ struct FractureMethodSettings {
     double crackElementSize = 0.0;
     // EST (and HYBRID after its switch): a step's SIFs are scaled down (logged) so that the crack
     // area the step adds releases no more than the strain energy of the event's tractions
-    // (SifEstimator.h, energyBoundScale). Scene key effects.fracture.<body>.energy_bound. Off by
-    // default: it changes the shipped scenes' outcomes, and the falling_boxes scenario at 0.9x
-    // speeds then ends with a 19 mg chip under the ground (README, Known limits: CCD).
-    bool estimatorEnergyBound = false;
+    // (SifEstimator.h, energyBoundScale). Scene key effects.fracture.<body>.energy_bound.
+    bool estimatorEnergyBound = true;
     // Throws btfracture::Error "<where>: ..." naming the field and value.
     void validate(const std::string& where) const;
 };

@@ -81,6 +81,11 @@ class SeparatedConvexPairs;
 
 class btFractureDynamicsWorld : public btDiscreteDynamicsWorld {
 public:
+    // getDispatchInfo().m_allowedCcdPenetration set by the constructor [m] (Bullet's default
+    // 0.04 lets millimetre chips spawned near the ground pass into it); change it after
+    // construction if the scene's units are not metres.
+    static constexpr btScalar kAllowedCcdPenetration = btScalar(0.001);
+
     btFractureDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* pairCache,
                             btConstraintSolver* constraintSolver,
                             btCollisionConfiguration* collisionConfiguration);

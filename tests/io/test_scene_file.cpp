@@ -90,7 +90,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
                   "image": {"width": 320, "height": 200, "projection": "orthographic", "shading": "flat",
                             "view": [0, 1, 0]}},
       "effects": {"outputs": ["png", "csv", "obj"], "seed": 42, "crack_cut": "coarse_sheet",
-                  "fracture": {"pane": {"method": "hybrid", "hybrid_threshold": 3000, "energy_bound": true, "refracture_depth": 2,
+                  "fracture": {"pane": {"method": "hybrid", "hybrid_threshold": 3000, "energy_bound": false, "refracture_depth": 2,
                                         "impulse_threshold": 0.5,
                                         "material_noise": {"amplitude": 0.2, "seed": 7}},
                                "rock": {"method": "est"}}}})",
@@ -103,7 +103,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_DOUBLE_EQ(pane.fracture.crackElementSize, 0.01);
     EXPECT_TRUE(pane.fracture.fracturable);
     EXPECT_EQ(pane.fracture.method, FractureMethod::Hybrid);
-    EXPECT_TRUE(pane.fracture.estimatorEnergyBound);
+    EXPECT_FALSE(pane.fracture.estimatorEnergyBound);
     EXPECT_EQ(pane.fracture.hybridElementThreshold, 3000);
     EXPECT_EQ(pane.fracture.maxRefractureDepth, 2);
     EXPECT_DOUBLE_EQ(pane.fracture.impulseThreshold, 0.5);
@@ -113,6 +113,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_TRUE(rock.fracture.fracturable);
     EXPECT_EQ(rock.fracture.method, FractureMethod::Estimated);
     EXPECT_EQ(rock.fracture.maxRefractureDepth, 3);         // default
+    EXPECT_TRUE(rock.fracture.estimatorEnergyBound);        // default
     EXPECT_DOUBLE_EQ(rock.fracture.crackElementSize, 0.0);  // default: relative to the BEM mesh
     EXPECT_EQ(rock.motion, SceneMotion::Sleeping);
     EXPECT_DOUBLE_EQ(rock.restitution, 0.25);
