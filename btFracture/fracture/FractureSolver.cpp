@@ -37,6 +37,7 @@ void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
     arrested_.resize(cracks_.nodeCount(), 0);
     tractions_ = q;
     peakStress_ = -1.0;
+    strainEnergy_ = -1.0;
     load_ = solver_.operators().tractionToLoad * q;
     solver_.netLoad(q);  // validates size
     if (settings_.method == FractureMethod::Hybrid && active_ == FractureMethod::Full &&
@@ -140,8 +141,8 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
         out.push_back(e);
     }
     // With estimatorEnergyBound, the step's new crack releases at most the strain energy the
-    // tractions store (energyBoundScale).
-    strainEnergy_ = solver_.strainEnergy(tractions_, crackFree_);
+    // tractions store (energyBoundScale); both are fixed for the event.
+    if (strainEnergy_ < 0.0) strainEnergy_ = solver_.strainEnergy(tractions_, crackFree_);
     energyScale_ = 1.0;
     if (!settings_.estimatorEnergyBound) return out;
     std::vector<FrontSifs> moving;

@@ -114,12 +114,13 @@ private:
     // diameter where that is 0.
     double elementSize_ = 0.0;
     Eigen::VectorXd tractions_, load_, crackLoad_, displacements_;
-    // EST: the event's crack-free displacements (no §4.3), their peak surface stress (negative
-    // until computed), read by the gain limit and the stress bound.
+    // EST: the event's crack-free displacements (no §4.3), their peak surface stress and the
+    // tractions' strain energy (both negative until computed), read by the gain limit, the
+    // stress bound and the energy bound.
     Eigen::VectorXd crackFree_;
-    double peakStress_ = -1.0;
+    double peakStress_ = -1.0, strainEnergy_ = -1.0;
     int stressBounded_ = 0;
-    double energyScale_ = 1.0, strainEnergy_ = 0.0;
+    double energyScale_ = 1.0;
     Eigen::VectorXd leavingOpenings_;  // FULL: per crack node, the §4.3 estimate of its opening
     int gainLimited_ = 0;
     Eigen::VectorXd estimatedOpenings_;  // EST: per crack node, 3 each
