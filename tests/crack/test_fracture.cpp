@@ -167,7 +167,7 @@ TEST(SifEstimator, EnergyBoundScalesTheStepToTheStrainEnergy) {
     FrontSifs f;
     f.frame = FrontFrame{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(),
                          Eigen::Vector3d::UnitX().cross(Eigen::Vector3d::UnitZ())};
-    f.KI = 1e4 * Kc;  // what EST reads under a ball (README: up to 14,000 K_c)
+    f.KI = 1e4 * Kc;  // what EST reads under a ball without the bound (README: thousands of K_c)
     f.spacing = 0.005;
     const double compliance = (1.0 - nu * nu) / E,
                  release = compliance * f.spacing * h * (f.KI * f.KI - Kc * Kc);
