@@ -282,9 +282,6 @@ btFractureDynamicsWorld::btFractureDynamicsWorld(btDispatcher* dispatcher, btBro
     : btDiscreteDynamicsWorld(dispatcher, pairCache, constraintSolver, collisionConfiguration),
       defaultMaterial_(Material::steel()),
       collisionConfiguration_(collisionConfiguration) {
-    // Bullet's CCD sweep ignores a hit unless the step carries the body more than this into it
-    // (default 4 cm); fragments are spawned a few millimetres from what their parent touched, at
-    // its velocity, and their contact breaking threshold is 2 % of their size.
     getDispatchInfo().m_allowedCcdPenetration = kAllowedCcdPenetration;
     if (auto* collisionDispatcher = dynamic_cast<btCollisionDispatcher*>(dispatcher)) {
         btGImpactCollisionAlgorithm::registerAlgorithm(collisionDispatcher);

@@ -81,9 +81,10 @@ class SeparatedConvexPairs;
 
 class btFractureDynamicsWorld : public btDiscreteDynamicsWorld {
 public:
-    // getDispatchInfo().m_allowedCcdPenetration set by the constructor [m] (Bullet's default
-    // 0.04 lets millimetre chips spawned near the ground pass into it); change it after
-    // construction if the scene's units are not metres.
+    // getDispatchInfo().m_allowedCcdPenetration set by the constructor [m]. Bullet's CCD sweep
+    // ignores a hit unless the step carries the body more than this into it; its default 0.04
+    // lets millimetre chips, spawned a few millimetres from what their parent touched and at its
+    // velocity, pass into the ground. Change it after construction if the units are not metres.
     static constexpr btScalar kAllowedCcdPenetration = btScalar(0.001);
 
     btFractureDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* pairCache,
