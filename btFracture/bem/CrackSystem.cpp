@@ -171,8 +171,12 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
     std::map<int, int> column;  // crack unknown -> local column
     for (int i = 0; i < static_cast<int>(unknowns.size()); ++i) column[unknowns[i]] = i;
     const bool withLoad = blocks == CouplingBlocks::SurfaceAndLoad;
-    CrackSurfaceCoupling out{Eigen::MatrixXd::Zero(3 * n, 3 * unknowns.size()),
+    CrackSurfaceCoupling out{Eigen::MatrixXd(),
                              Eigen::MatrixXd::Zero(withLoad ? 3 * unknowns.size() : 0, withLoad ? 3 * m : 0)};
+    // C accumulated row-major: each surface triangle adds to its three nodes' rows across all
+    // columns, which are then contiguous (column-major strides a row of C per entry).
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> C =
+        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>::Zero(3 * n, 3 * unknowns.size());
     const std::vector<BasisElement> support = basisElements(mesh, cracks, unknowns, cut, q);
     std::vector<std::vector<int>> columns(support.size());  // per element, per function: column of C
     for (std::size_t e = 0; e < support.size(); ++e)
@@ -219,7 +223,7 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
                     for (int a = 0; a < 3; ++a) {
                         const int row = 3 * mesh.triangle(sigma)[a];
                         addStiffnessBlock(surfaceCurl[a].data(), d.data(), P, mu * coeff.a, 1.0,
-                                          [&](int i, int j, double v) { out.C(row + i, col + j) += v; });
+                                          [&](int i, int j, double v) { C(row + i, col + j) += v; });
                     }
                     // Test function on the element against the traction of sigma (the mass term
                     // only where a cut surface hat lies on sigma itself).
@@ -236,6 +240,14 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
             }
         }
     }
+    // To column-major in tiles: a plain strided copy misses the TLB on every entry.
+    constexpr Eigen::Index kTile = 64;
+    out.C.resize(C.rows(), C.cols());
+    for (Eigen::Index c = 0; c < C.cols(); c += kTile)
+        for (Eigen::Index r = 0; r < C.rows(); r += kTile) {
+            const Eigen::Index h = std::min(kTile, C.rows() - r), w = std::min(kTile, C.cols() - c);
+            out.C.block(r, c, h, w) = C.block(r, c, h, w);
+        }
     return out;
 }
 
