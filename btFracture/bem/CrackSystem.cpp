@@ -175,8 +175,8 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
                              Eigen::MatrixXd::Zero(withLoad ? 3 * unknowns.size() : 0, withLoad ? 3 * m : 0)};
     // C accumulated row-major: each surface triangle adds to its three nodes' rows across all
     // columns, which are then contiguous (column-major strides a row of C per entry).
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> C =
-        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>::Zero(3 * n, 3 * unknowns.size());
+    using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    RowMajorMatrix C = RowMajorMatrix::Zero(3 * n, 3 * unknowns.size());
     const std::vector<BasisElement> support = basisElements(mesh, cracks, unknowns, cut, q);
     std::vector<std::vector<int>> columns(support.size());  // per element, per function: column of C
     for (std::size_t e = 0; e < support.size(); ++e)
