@@ -48,6 +48,20 @@ bool blockedAlong(const SeparationBody& body, const Eigen::Vector3d& push) {
 
 }  // namespace
 
+std::vector<Eigen::Vector3d> blockedNormals(const std::vector<StaticContact>& contacts,
+                                            const std::vector<ConvexPolytope>& pieces, double length) {
+    Eigen::AlignedBox3d box;
+    for (const ConvexPolytope& piece : pieces)
+        for (const Eigen::Vector3d& p : piece.points) box.extend(p);
+    std::vector<Eigen::Vector3d> normals;
+    for (const StaticContact& c : contacts)
+        if (box.isEmpty() || std::any_of(c.points.begin(), c.points.end(), [&](const Eigen::Vector3d& p) {
+                return box.exteriorDistance(p) <= kStaticContactReach * length;
+            }))
+            normals.push_back(c.normal);
+    return normals;
+}
+
 SeparationResult separateOverlaps(const std::vector<SeparationBody>& bodies,
                                   const SeparationOptions& options) {
     const std::size_t n = bodies.size();

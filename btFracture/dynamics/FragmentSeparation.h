@@ -24,6 +24,22 @@ struct SeparationBody {
     std::vector<Eigen::Vector3d> blockedDirections;
 };
 
+// A parent's solved contacts with static geometry sharing one unit normal (into the body), with
+// their points on it (world frame [m]).
+struct StaticContact {
+    Eigen::Vector3d normal;
+    std::vector<Eigen::Vector3d> points;
+};
+
+// The normals among the parent's static `contacts` that a fragment of characteristic length
+// `length` [m] with world-frame convex `pieces` takes over as SeparationBody::blockedDirections:
+// those with a point within kStaticContactReach * length of the pieces' bounding box. A fragment
+// the parent's contact does not reach (the top of a standing column) may be pushed along its
+// normal; one without convex pieces (a GImpact mesh) keeps every contact.
+constexpr double kStaticContactReach = 0.05;
+std::vector<Eigen::Vector3d> blockedNormals(const std::vector<StaticContact>& contacts,
+                                            const std::vector<ConvexPolytope>& pieces, double length);
+
 struct SeparationOptions {
     int maxSweeps = 8;             // passes over all pairs
     double tolerance = 1e-6;       // overlaps below tolerance * min length are left alone

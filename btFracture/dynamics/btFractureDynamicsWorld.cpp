@@ -48,10 +48,11 @@ bool wasSolved(const btPersistentManifold& manifold) {
     return (a->isActive() || b->isActive()) && a->hasContactResponse() && b->hasContactResponse();
 }
 
-// Unit normals of the body's contacts with static or kinematic objects, pointing into the body
-// (duplicates removed): its fragments are not separated against them, i.e. into the ground.
-std::vector<Eigen::Vector3d> staticContactNormals(btDispatcher& dispatcher, const btCollisionObject& body) {
-    std::vector<Eigen::Vector3d> normals;
+// The body's solved contacts with static or kinematic objects, unit normals into the body, each
+// normal once with every point that has it: the fragments they reach are not separated against
+// them, i.e. into the ground (blockedNormals, FragmentSeparation.h).
+std::vector<StaticContact> staticContactsOf(btDispatcher& dispatcher, const btCollisionObject& body) {
+    std::vector<StaticContact> contacts;
     for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
         const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
         const bool isBody0 = manifold->getBody0() == &body;
@@ -65,12 +66,15 @@ std::vector<Eigen::Vector3d> staticContactNormals(btDispatcher& dispatcher, cons
             const Eigen::Vector3d n = toEigen(isBody0 ? point.m_normalWorldOnB : -point.m_normalWorldOnB);
             if (!(n.norm() > 0.5)) continue;
             const Eigen::Vector3d unit = n.normalized();
-            if (std::none_of(normals.begin(), normals.end(),
-                             [&](const Eigen::Vector3d& seen) { return seen.dot(unit) > 1.0 - 1e-9; }))
-                normals.push_back(unit);
+            const Eigen::Vector3d at =
+                toEigen(isBody0 ? point.getPositionWorldOnA() : point.getPositionWorldOnB());
+            auto seen = std::find_if(contacts.begin(), contacts.end(),
+                                     [&](const StaticContact& c) { return c.normal.dot(unit) > 1.0 - 1e-9; });
+            if (seen == contacts.end()) seen = contacts.insert(contacts.end(), StaticContact{unit, {}});
+            seen->points.push_back(at);
         }
     }
-    return normals;
+    return contacts;
 }
 
 // Dynamic bodies with solved contacts with `body` (each once, in manifold order).
@@ -264,8 +268,8 @@ struct btFractureDynamicsWorld::Event {
     FractureOutcome outcome;
     FractureEventInfo info;
     std::vector<btFractureRigidBody*> fragments;
-    std::vector<Eigen::Vector3d> staticNormals;  // the parent's contacts with static geometry
-    std::vector<const btRigidBody*> partners;    // dynamic bodies in contact with the parent
+    std::vector<StaticContact> staticContacts;  // the parent's contacts with static geometry
+    std::vector<const btRigidBody*> partners;   // dynamic bodies in contact with the parent
     FractureEnergyAudit energy;
     double bodyPotential = 0.0;  // the parent's, before the step
 };
@@ -621,7 +625,7 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             continue;
         }
         if (event.outcome.fragments.empty()) continue;
-        event.staticNormals = staticContactNormals(*m_dispatcher1, *body);
+        event.staticContacts = staticContactsOf(*m_dispatcher1, *body);
         event.partners = dynamicContactPartners(*m_dispatcher1, *body);
         events.push_back(std::move(event));
     }
@@ -656,7 +660,6 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
         for (btFractureRigidBody* f : event.fragments) {
             spawned.push_back(f);
             SeparationBody s;
-            s.blockedDirections = event.staticNormals;
             s.mass = 1.0 / double(f->getInvMass());
             s.length = f->characteristicLength();
             for (const ConvexPolytope& piece : f->shapeStorage().convexPieces()) {
@@ -664,6 +667,7 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
                 for (auto& p : world.points) p = toEigen(f->getWorldTransform() * toBullet(p));
                 s.pieces.push_back(std::move(world));
             }
+            s.blockedDirections = blockedNormals(event.staticContacts, s.pieces, s.length);
             reshaped.push_back(!parentPieces.empty() && containWithin(s, parentPieces));
             separation.push_back(std::move(s));
         }

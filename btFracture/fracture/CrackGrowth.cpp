@@ -136,6 +136,9 @@ int addFrontTriangle(CrackMesh& cracks, int apex, int from, int to, double maxEd
     return 2;
 }
 
+// FULL: the distance [max edge] from the surface within which a front step ends on it.
+constexpr double kSurfaceSnap = 0.05;
+
 }  // namespace
 
 GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& advances,
@@ -186,9 +189,21 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
                 stops = again.crack;
             }
         }
+        // FULL (SurfaceReach::OnSurface): snap to the surface within kSurfaceSnap (header).
+        bool reachesSurface = surfaceTarget && !fromSurface;
+        if (toSurface && !blocked) {
+            const SurfaceMesh::Nearest near = body.nearest(target);
+            if (near.distance < kSurfaceSnap * maxEdge &&
+                (fromSurface || near.distance < body.nearest(p).distance)) {
+                target = near.point;
+                surfaceTarget = true;
+                reachesSurface = !fromSurface;
+            }
+        }
+        const double room = reachesSurface ? 1e-6 * maxEdge : 0.05 * maxEdge;
         // No room left, or the node is (a carried crack reaching past a fragment's surface) or
         // ends outside the body: outside, a front would grow on unchecked.
-        if ((target - p).norm() < 0.05 * maxEdge || (!surfaceTarget && !body.encloses(target))) {
+        if ((target - p).norm() < room || (!surfaceTarget && !body.encloses(target))) {
             arrested[node] = 1;
             ++result.arrestedNodes;
             continue;

@@ -34,7 +34,8 @@ struct GrowthResult {
 enum class FoldGuard { Hold, Off };
 // Where a front that meets the surface stops. Inside: just inside it (0.9 of the way), as EST's
 // embedded-crack estimate needs. OnSurface: on it (FULL, whose sheets open there as mouths,
-// FORMULATION.md).
+// FORMULATION.md); a step ending within 0.05 max edge of the surface it heads for ends on it, and
+// a node that close goes on to it however short the step, so no front stays shut a sliver inside.
 enum class SurfaceReach { Inside, OnSurface };
 
 // `advances[node]` holds the motion of each front node (distance 0 = stays). `arrested` (per

@@ -136,6 +136,33 @@ TEST(FragmentSeparation, OverlappingBoxesArePushedApartAboutTheirCentreOfMass) {
     EXPECT_EQ(none.largestPush, 0.0);
 }
 
+// Of a standing column's contact with the ground (normal +y, points at y = 0), its base fragment
+// takes the contact over; a fragment 1 m up does not, so an overlap with the base below it is
+// shared about their centre of mass instead of lifting the upper one alone (which added the
+// potential energy of its whole push to the event). A GImpact fragment (no convex pieces) keeps it.
+TEST(FragmentSeparation, FragmentsTakeOverOnlyTheStaticContactsTheyReach) {
+    const StaticContact ground{Eigen::Vector3d(0, 1, 0),
+                               {Eigen::Vector3d(-0.5, 0, 0), Eigen::Vector3d(0.5, 0, 0)}};
+    auto boxAt = [](double y) {
+        auto points = makeBox(Eigen::Vector3d(0.5, 0.5, 0.5), 0.0, "cube").vertices;
+        for (auto& p : points) p.y() += y;
+        return std::vector<ConvexPolytope>{ConvexPolytope{points, 0.0}};
+    };
+    EXPECT_EQ(blockedNormals({ground}, boxAt(0.5), 1.0).size(), 1u);   // resting on it
+    EXPECT_EQ(blockedNormals({ground}, boxAt(0.54), 1.0).size(), 1u);  // 4 cm above: within 5 %
+    EXPECT_TRUE(blockedNormals({ground}, boxAt(1.5), 1.0).empty());
+    EXPECT_EQ(blockedNormals({ground}, {}, 1.0).size(), 1u);
+    SeparationBody base{boxAt(0.5), 3.0, 1.0, blockedNormals({ground}, boxAt(0.5), 1.0)};
+    SeparationBody upper{boxAt(1.4), 1.0, 1.0, blockedNormals({ground}, boxAt(1.4), 1.0)};
+    const SeparationResult r = separateOverlaps({base, upper});
+    EXPECT_EQ(r.pushes[0], Eigen::Vector3d::Zero());  // the base stays on the ground
+    EXPECT_NEAR(r.pushes[1].y(), 0.1, 1e-6);
+    upper.pieces = boxAt(1.4);
+    SeparationBody middle{boxAt(2.3), 1.0, 1.0, blockedNormals({ground}, boxAt(2.3), 1.0)};
+    const SeparationResult shared = separateOverlaps({upper, middle});
+    EXPECT_LT((1.0 * shared.pushes[0] + 1.0 * shared.pushes[1]).norm(), 1e-9);  // centre of mass stays
+}
+
 // A fragment resting on static geometry is never pushed into it: the other one moves alone. This
 // is what sank slab fragments into the ground (flat face on flat face: 3 cm below the plane).
 TEST(FragmentSeparation, BodyOnStaticGeometryIsNotPushedIntoIt) {

@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <string>
 
 using namespace btfracture;
 
@@ -560,6 +561,46 @@ TEST(CrackGrowth, AStepBehindTheFrontEdgeIsHeldNotFolded) {
         for (int t = before; t < cracks.triangleCount(); ++t)
             EXPECT_GT(cracks.normal(t).dot(normal), 0.99) << "new triangle " << t << " turns over the sheet";
     }
+}
+
+// FULL's fronts end on the surface they head for (SurfaceReach::OnSurface): a front 0.5 mm inside
+// a face of a 1 m cube, stepping 3 cm square to it, goes on to it (before, its step was too short
+// to take and it was arrested there, shut, a sliver inside), and a step ending 5 mm short of the
+// face (a quarter of the 0.05 max-edge snap) ends on it; its middle node then opens as mouth. EST
+// (Inside) keeps both fronts inside.
+TEST(CrackGrowth, FullFrontsNearAFaceEndOnIt) {
+    const SurfaceMesh cube(makeBox(Eigen::Vector3d(0.5, 0.5, 0.5), 4.0));
+    struct Case {
+        double start, distance;
+    };
+    for (const Case c : {Case{0.4995, 0.03}, Case{0.46, 0.035}})
+        for (const SurfaceReach reach : {SurfaceReach::OnSurface, SurfaceReach::Inside}) {
+            CrackMesh cracks;  // a trapezoid in the plane x = 0, its front a - m - b at y = c.start
+            const int p = cracks.addNode(Eigen::Vector3d(0.0, 0.3, -0.2)),
+                      q = cracks.addNode(Eigen::Vector3d(0.0, 0.3, 0.2));
+            const int a = cracks.addNode(Eigen::Vector3d(0.0, c.start, -0.1)),
+                      m = cracks.addNode(Eigen::Vector3d(0.0, c.start, 0.0)),
+                      b = cracks.addNode(Eigen::Vector3d(0.0, c.start, 0.1));
+            cracks.addTriangle(p, a, m);
+            cracks.addTriangle(p, m, q);
+            cracks.addTriangle(q, m, b);
+            cracks.refreshUnknowns(cube);
+            std::map<int, FrontAdvance> advances;
+            for (const int node : {a, m, b}) advances[node] = {c.distance, 0.0, Eigen::Vector3d::UnitY()};
+            std::vector<char> arrested;
+            const GrowthResult growth =
+                growFronts(cracks, advances, cube, 0.2, arrested, FoldGuard::Hold, reach);
+            const bool full = reach == SurfaceReach::OnSurface;
+            const bool tooClose = c.start > 0.49;
+            SCOPED_TRACE(std::string(full ? "FULL" : "EST") + " from y = " + std::to_string(c.start));
+            EXPECT_EQ(growth.advancedNodes, full || !tooClose ? 3 : 0);
+            if (growth.advancedNodes != 3) continue;
+            const int mNew = growth.newNode.at(m);
+            EXPECT_NEAR(cracks.node(mNew).y(), full ? 0.5 : c.start + c.distance, 1e-12);
+            cracks.refreshUnknowns(cube);
+            EXPECT_EQ(cracks.onSurface(mNew), full);
+            EXPECT_EQ(cracks.isMouth(mNew), full);
+        }
 }
 
 // Issue 5: the coarse front stays a manifold curve - every front node has exactly one front
