@@ -60,11 +60,11 @@ struct CrackSettings {
     // mouth (bem/FORMULATION.md, "Seeds"); off: hexagons just inside, as EST always seeds. Off by
     // default while the shipped suites' outcomes with it are not all sound (README, Known limits).
     bool surfaceSeeds = false;
-    // k of §4.2. The paper uses 1.1215 (through edge crack, Gross & Seelig table 4.1), but its
-    // BEM and ours hold grown cracks at zero opening on the whole sheet boundary (FULL opens a
-    // mouth only where a sheet meets the surface along surface edges), i.e. as embedded cracks,
-    // whose factor is 2/pi (penny crack). Measured against FULL on a growing mode-I crack: 2/pi
-    // tracks within 5 %, 1.1215 overestimates 1.7-3x (tests/crack).
+    // k of §4.2. The paper uses 1.1215 (through edge crack, Gross & Seelig table 4.1); EST keeps
+    // its fronts just inside the surface and treats every crack as embedded, whose factor is 2/pi
+    // (penny crack). Measured against FULL on a growing embedded mode-I crack: 2/pi tracks within
+    // 5 %, 1.1215 overestimates 1.7-3x (tests/crack); on surface-breaking cracks EST stays below
+    // FULL (README, Known limits).
     double estimatorGeometryFactor = 2.0 / M_PI;
     bool estimatorUpdate = true;  // the right-hand-side update of §4.3
     // If > 0, the §4.3 update may raise a front's estimated K_eff at most this factor above the
