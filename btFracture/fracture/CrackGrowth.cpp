@@ -190,17 +190,16 @@ GrowthResult growFronts(CrackMesh& cracks, const std::map<int, FrontAdvance>& ad
             }
         }
         // FULL (SurfaceReach::OnSurface): snap to the surface within kSurfaceSnap (header).
-        bool reachesSurface = surfaceTarget && !fromSurface;
         if (toSurface && !blocked) {
             const SurfaceMesh::Nearest near = body.nearest(target);
             if (near.distance < kSurfaceSnap * maxEdge &&
                 (fromSurface || near.distance < body.nearest(p).distance)) {
                 target = near.point;
                 surfaceTarget = true;
-                reachesSurface = !fromSurface;
             }
         }
-        const double room = reachesSurface ? 1e-6 * maxEdge : 0.05 * maxEdge;
+        // A node arriving at the surface goes on to it however short its step.
+        const double room = surfaceTarget && !fromSurface ? 1e-6 * maxEdge : 0.05 * maxEdge;
         // No room left, or the node is (a carried crack reaching past a fragment's surface) or
         // ends outside the body: outside, a front would grow on unchecked.
         if ((target - p).norm() < room || (!surfaceTarget && !body.encloses(target))) {

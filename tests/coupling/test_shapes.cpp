@@ -157,7 +157,6 @@ TEST(FragmentSeparation, FragmentsTakeOverOnlyTheStaticContactsTheyReach) {
     const SeparationResult r = separateOverlaps({base, upper});
     EXPECT_EQ(r.pushes[0], Eigen::Vector3d::Zero());  // the base stays on the ground
     EXPECT_NEAR(r.pushes[1].y(), 0.1, 1e-6);
-    upper.pieces = boxAt(1.4);
     SeparationBody middle{boxAt(2.3), 1.0, 1.0, blockedNormals({ground}, boxAt(2.3), 1.0)};
     const SeparationResult shared = separateOverlaps({upper, middle});
     EXPECT_LT((1.0 * shared.pushes[0] + 1.0 * shared.pushes[1]).norm(), 1e-9);  // centre of mass stays
