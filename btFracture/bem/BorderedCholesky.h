@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace btfracture {
@@ -27,6 +28,13 @@ public:
     // Keeps the factor of the leading `rows` x `rows` block only (rows <= size()).
     void truncate(int rows);
 
+    // The factor of S without the given rows and columns (indices into S, ascending, distinct):
+    // deleting index j leaves the factor's rows above j as they are and turns the trailing factor
+    // into that of L22 L22^T + l l^T (l: column j below the diagonal), a rank-one update by
+    // rotations, so deleting d of the last m indices costs about 2 d m^2 flops instead of
+    // refactoring them.
+    void remove(const std::vector<int>& indices);
+
     // x := L^-1 x for size() rows and any number of columns.
     void forwardSubstitute(Eigen::Ref<Eigen::MatrixXd> x) const;
     // x := S^-1 x.
@@ -37,8 +45,6 @@ public:
     double diagonalRatio() const;
     // S = L L^T as a dense matrix (size() x size()).
     Eigen::MatrixXd product() const;
-    // Columns first .. first + count of S (size() x count).
-    Eigen::MatrixXd productColumns(int first, int count) const;
     std::size_t bytes() const;
 
 private:
@@ -46,7 +52,9 @@ private:
         int row0;           // first row of the panel
         Eigen::MatrixXd L;  // rows row0 .. row0 + h of L: [X^T | M], M lower triangular
     };
-    std::vector<Panel> panels_;
+    // Panels never change once made (truncate and remove make new ones), so a copy of the factor
+    // shares them: copying costs nothing, changing a copy leaves the original as it was.
+    std::vector<std::shared_ptr<const Panel>> panels_;
     int size_ = 0;
     double minDiagonal_ = 0.0, maxDiagonal_ = 0.0;
 };

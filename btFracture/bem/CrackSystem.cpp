@@ -7,6 +7,7 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Log.h>
 #include <btFracture/core/ParallelProduct.h>
+#include <btFracture/core/Timer.h>
 
 #include <Eigen/LU>
 
@@ -16,7 +17,6 @@
 #include <cstring>
 #include <limits>
 #include <map>
-#include <optional>
 #include <sstream>
 
 namespace btfracture {
@@ -157,7 +157,7 @@ PairIntegrals integrate(const QuadraturePanel& x, const QuadraturePanel& y, cons
                         bool doubleLayer) {
     if (relationOf(x.panel, y.panel) == PairRelation::Separated)
         return integrateSeparated(x, y, q, doubleLayer);
-    return integrateSingular(x.panel, y.panel, q);
+    return integrateSingular(x.panel, y.panel, q, doubleLayer);
 }
 
 // assembleCrackSurfaceCoupling with the mouth split already made.
@@ -255,7 +255,7 @@ CrackSystem::CrackSystem(const ElasticSolver& solver, CrackMesh& cracks, Blocks 
     : solver_(solver), cracks_(cracks), blocks_(blocks) {
     const int n3 = 3 * solver.mesh().nodeCount(), m3 = 3 * solver.mesh().triangleCount();
     C_.resize(n3, 0);
-    G_.resize(0, m3);
+    Gt_.resize(m3, 0);
     D_.resize(0, 0);
 }
 
@@ -313,34 +313,40 @@ int CrackSystem::update() {
     if (redo.empty()) return 0;
     std::vector<int> position(total, -1);  // unknown -> its index in redo
     for (int i = 0; i < static_cast<int>(redo.size()); ++i) position[redo[i]] = i;
-    // The factor's order: unknowns at slots before the first changed one keep their factor; the
-    // rest are factored again, unchanged ones first, changed and new ones last (mouth unknowns,
-    // which change most, drift to the end, where refactoring is cheap).
+    // The factor's order: the unchanged unknowns in their old order (the Cholesky factor loses the
+    // changed ones' rows by rank-one updates, the LU is extended again from the first of them), then
+    // the changed and the new ones.
     std::vector<int> slotOf(assembledUnknowns_);  // unknown -> its slot in the factor
     for (int s = 0; s < assembledUnknowns_; ++s) slotOf[slots_[s]] = s;
-    int first = assembledUnknowns_;
+    int first = assembledUnknowns_;  // the first slot whose unknown changed
     for (int i = 0; i < changed; ++i) first = std::min(first, slotOf[redo[i]]);
-    std::vector<int> slots(slots_.begin(), slots_.begin() + first);
-    for (int s = first; s < assembledUnknowns_; ++s)
-        if (position[slots_[s]] < 0) slots.push_back(slots_[s]);
+    std::vector<int> slots;
+    std::vector<int> keptRows;  // the unchanged unknowns' rows in the old factor's order
+    for (int s = 0; s < assembledUnknowns_; ++s)
+        if (position[slots_[s]] < 0) {
+            slots.push_back(slots_[s]);
+            for (int i = 0; i < 3; ++i) keptRows.push_back(3 * s + i);
+        }
+    const int kept = static_cast<int>(slots.size());
     slots.insert(slots.end(), redo.begin(), redo.end());
     if (changed > 0)
-        logf(LogLevel::Debug, "crack system: the mouth's cut changed ", changed, " crack unknowns; ",
-             assembledUnknowns_ - first, " of ", assembledUnknowns_, " are factored again");
+        logf(LogLevel::Debug, "crack system: the mouth's cut changed ", changed, " of ", assembledUnknowns_,
+             " crack unknowns (the first at slot ", first, ")");
 
     // The changed unknowns' old columns, restored if the grown system turns out singular.
     Eigen::MatrixXd savedC(C_.rows(), 3 * changed), savedD;
-    Eigen::MatrixXf savedG(3 * changed, G_.cols());
+    Eigen::MatrixXf savedG(Gt_.rows(), 3 * changed);
     if (blocks_ == Blocks::Keep) savedD.resize(D_.rows(), 3 * changed);
     for (int i = 0; i < changed; ++i) {
         savedC.middleCols(3 * i, 3) = C_.middleCols(3 * redo[i], 3);
-        savedG.middleRows(3 * i, 3) = G_.middleRows(3 * redo[i], 3);
+        savedG.middleCols(3 * i, 3) = Gt_.middleCols(3 * redo[i], 3);
         if (blocks_ == Blocks::Keep) savedD.middleCols(3 * i, 3) = D_.middleCols(3 * redo[i], 3);
     }
     try {
-        const int old3 = 3 * assembledUnknowns_, new3 = 3 * total, redo3 = 3 * static_cast<int>(redo.size());
+        const int new3 = 3 * total, redo3 = 3 * static_cast<int>(redo.size());
 
         // Surface-crack coupling of the redone unknowns: their columns of C, rows of G.
+        Timer phase;
         const CrackSurfaceCoupling coupling =
             assembleCoupling(solver_, cracks_, redo, CouplingBlocks::SurfaceAndLoad, cut);
 
@@ -384,21 +390,22 @@ int CrackSystem::update() {
 #pragma omp parallel for schedule(dynamic, 64)
         for (int i = 0; i < static_cast<int>(pairs.size()); ++i)
             coeffs[i] = coefficientsOf(
-                integratePair(elements[pairs[i].first].panel, elements[pairs[i].second].panel, q), mu, nu);
+                integrate(elements[pairs[i].first].panel, elements[pairs[i].second].panel, q, false), mu, nu);
         for (std::size_t i = 0; i < pairs.size(); ++i) {
             const auto [x, y] = pairs[i];
             addBlock(elements[x], elements[y], coeffs[i], false);
             if (y != x) addBlock(elements[x], elements[y], coeffs[i], true);
         }
 
+        const double integrals = phase.seconds();
         // The blocks in unknown order, the redone unknowns' columns (and rows of G, D) replaced.
         C_.conservativeResize(Eigen::NoChange, new3);
-        G_.conservativeResize(new3, Eigen::NoChange);
+        Gt_.conservativeResize(Eigen::NoChange, new3);
         if (blocks_ == Blocks::Keep) D_.conservativeResize(new3, new3);
         for (int i = 0; i < static_cast<int>(redo.size()); ++i) {
             const int at = 3 * redo[i];
             C_.middleCols(at, 3) = coupling.C.middleCols(3 * i, 3);
-            G_.middleRows(at, 3) = coupling.G.middleRows(3 * i, 3).cast<float>();
+            Gt_.middleCols(at, 3) = coupling.G.middleRows(3 * i, 3).transpose().cast<float>();
             if (blocks_ == Blocks::Keep) {
                 D_.middleCols(at, 3) = columns.middleCols(3 * i, 3);
                 D_.middleRows(at, 3) = columns.middleCols(3 * i, 3).transpose();
@@ -406,64 +413,62 @@ int CrackSystem::update() {
         }
 
         // Schur complement columns S(:, redo) = D(:, redo) - C^T K_R^-1 K^T C_redo (unknown order).
+        phase.restart();
         columns -= transposedProduct(C_, regularisedLoadSolve(coupling.C));
+        const double schurColumns = phase.seconds();
+        phase.restart();
 
-        // S in the factor's new order from slot `first` on: redone entries from `columns` (rows of
-        // a redone unknown by symmetry), the others from the old S.
-        const int first3 = 3 * first, width = new3 - first3;
+        // S's columns of the redone unknowns, rows in the factor's new order.
+        const int first3 = 3 * first, kept3 = 3 * kept;
         const bool wasDense = denseSchur_.size() > 0;
-        const Eigen::MatrixXd fromFactor =
-            wasDense ? Eigen::MatrixXd() : schur_.productColumns(first3, old3 - first3);
-        const Eigen::Ref<const Eigen::MatrixXd> oldColumns =
-            wasDense ? Eigen::Ref<const Eigen::MatrixXd>(denseSchur_.rightCols(old3 - first3))
-                     : Eigen::Ref<const Eigen::MatrixXd>(fromFactor);
-        Eigen::MatrixXd tail(new3, width);
-        for (int c = first; c < total; ++c) {
-            const int v = slots[c], pv = position[v];
-            for (int r = 0; r < total; ++r) {
-                const int u = slots[r], pu = position[u];
-                auto block = tail.block<3, 3>(3 * r, 3 * (c - first));
-                if (pv >= 0)
-                    block = columns.block<3, 3>(3 * u, 3 * pv);
-                else if (pu >= 0)
-                    block = columns.block<3, 3>(3 * v, 3 * pu).transpose();
-                else
-                    block = oldColumns.block<3, 3>(3 * slotOf[u], 3 * (slotOf[v] - first));
-            }
-        }
+        Eigen::MatrixXd tail(new3, redo3);
+        for (int r = 0; r < total; ++r) tail.middleRows(3 * r, 3) = columns.middleRows(3 * slots[r], 3);
         columns.resize(0, 0);
-        Eigen::MatrixXd head;                  // S of the kept slots from the factor, once Cholesky fails
-        std::optional<BorderedCholesky> copy;  // the factor is left as it was if this throws
-        if (first3 < schur_.size() || wasDense) copy = schur_;
-        // On LU, the factor is the Cholesky factor of S's leading positive definite slots.
-        BorderedCholesky& factor = copy ? *copy : schur_;
-        factor.truncate(first3);
+        // S in the new order, whole, for the LU: the kept block, then the redone columns.
+        Eigen::MatrixXd grown;
+        const auto growDense = [&](const Eigen::MatrixXd& keptBlock) {
+            grown.resize(new3, new3);
+            grown.topLeftCorner(kept3, kept3) = keptBlock;
+            grown.rightCols(redo3) = tail;
+            grown.bottomLeftCorner(redo3, kept3) = tail.topRows(kept3).transpose();
+            for (int j = kept3; j < new3; ++j)  // the new block symmetric, from its lower triangle
+                for (int i = kept3; i < j; ++i) grown(i, j) = grown(j, i);
+        };
+        // A copy (sharing its panels), so that the factor is left as it was if this throws. On LU,
+        // the factor is the Cholesky factor of S's leading positive definite slots.
+        BorderedCholesky factor = schur_;
         bool dense = wasDense;
         int indefiniteRows = indefiniteRows_;
-        // Back to Cholesky after a change if the kept part allows it: not while the kept rows still
-        // hold, unchanged, the block whose extension failed (a principal block of a matrix that is
-        // not positive definite is not either).
-        if (dense && changed > 0 && first3 < indefiniteRows) {
-            if (factor.extend(denseSchur_.block(0, factor.size(), first3, first3 - factor.size()), 1e-15))
-                dense = false;
-            else
-                indefiniteRows = first3;
-        }
-        if (!dense && !factor.extend(tail, 1e-15)) {
-            indefiniteRows = new3;
-            logf(luLogged_ ? LogLevel::Debug : LogLevel::Info, "crack system: the Schur complement of ",
-                 total, " crack unknowns is not positive definite; factored by LU from here on");
-            luLogged_ = true;
-            if (!wasDense) head = factor.product();
-            dense = true;
+        if (!dense) {
+            std::vector<int> removed;
+            for (int i = 0; i < changed; ++i)
+                for (int d = 0; d < 3; ++d) removed.push_back(3 * slotOf[redo[i]] + d);
+            std::sort(removed.begin(), removed.end());
+            factor.remove(removed);
+            if (!factor.extend(tail, 1e-15)) {
+                indefiniteRows = new3;
+                logf(luLogged_ ? LogLevel::Debug : LogLevel::Info, "crack system: the Schur complement of ",
+                     total, " crack unknowns is not positive definite; factored by LU from here on");
+                luLogged_ = true;
+                dense = true;
+                growDense(factor.product());
+            }
+        } else {
+            growDense(denseSchur_(keptRows, keptRows));
+            factor.truncate(std::min(factor.size(), first3));
+            // Back to Cholesky after a change if the kept part allows it: not while the kept rows
+            // still hold, unchanged, the block whose extension failed (a principal block of a
+            // matrix that is not positive definite is not either).
+            if (changed > 0 && first3 < indefiniteRows) {
+                if (!factor.extend(grown.block(0, factor.size(), kept3, kept3 - factor.size()), 1e-15))
+                    indefiniteRows = kept3;
+                else if (!factor.extend(tail, 1e-15))
+                    indefiniteRows = new3;
+                else
+                    dense = false;
+            }
         }
         if (dense) {
-            Eigen::MatrixXd grown(new3, new3);
-            grown.topLeftCorner(first3, first3) = wasDense ? denseSchur_.topLeftCorner(first3, first3) : head;
-            grown.rightCols(width) = tail;
-            grown.bottomLeftCorner(width, first3) = tail.topRows(first3).transpose();
-            for (int j = first3; j < new3; ++j)  // the new block symmetric, from its lower triangle
-                for (int i = first3; i < j; ++i) grown(i, j) = grown(j, i);
             // The LU extended from its last block boundary among the kept slots in blocks of
             // kLuBlock rows (so that a later change keeps the blocks before it); factored anew in
             // one block when a block is singular or the block pivoting lost accuracy.
@@ -496,7 +501,10 @@ int CrackSystem::update() {
             denseSchur_.resize(0, 0);
             lu_ = BorderedLU();
         }
-        if (copy) schur_ = std::move(*copy);
+        logf(LogLevel::Debug, "crack system: ", total, " crack unknowns, ", redo.size(),
+             " assembled: integrals ", integrals, " s, Schur complement columns ", schurColumns,
+             " s, factor ", phase.seconds(), " s");
+        schur_ = std::move(factor);
         indefiniteRows_ = dense ? indefiniteRows : 0;
         slots_ = std::move(slots);
         fingerprints_ = std::move(fingerprints);
@@ -504,14 +512,14 @@ int CrackSystem::update() {
     } catch (const Error&) {
         for (int i = 0; i < changed; ++i) {
             C_.middleCols(3 * redo[i], 3) = savedC.middleCols(3 * i, 3);
-            G_.middleRows(3 * redo[i], 3) = savedG.middleRows(3 * i, 3);
+            Gt_.middleCols(3 * redo[i], 3) = savedG.middleCols(3 * i, 3);
             if (blocks_ == Blocks::Keep) {
                 D_.middleCols(3 * redo[i], 3) = savedD.middleCols(3 * i, 3);
                 D_.middleRows(3 * redo[i], 3) = savedD.middleCols(3 * i, 3).transpose();
             }
         }
         C_.conservativeResize(Eigen::NoChange, 3 * assembledUnknowns_);
-        G_.conservativeResize(3 * assembledUnknowns_, Eigen::NoChange);
+        Gt_.conservativeResize(Eigen::NoChange, 3 * assembledUnknowns_);
         if (blocks_ == Blocks::Keep) D_.conservativeResize(3 * assembledUnknowns_, 3 * assembledUnknowns_);
         throw;
     }
@@ -575,16 +583,16 @@ Eigen::MatrixXd CrackSystem::regularisedLoadSolve(const Eigen::MatrixXd& b) cons
 
 Eigen::VectorXd CrackSystem::loadOnCracks(const Eigen::VectorXd& q) const {
     constexpr int kRows = 64;
-    Eigen::VectorXd out(G_.rows());
-    for (Eigen::Index r = 0; r < G_.rows(); r += kRows) {
-        const Eigen::Index h = std::min<Eigen::Index>(kRows, G_.rows() - r);
-        out.segment(r, h).noalias() = G_.middleRows(r, h).cast<double>() * q;
+    Eigen::VectorXd out(Gt_.cols());
+    for (Eigen::Index r = 0; r < Gt_.cols(); r += kRows) {
+        const Eigen::Index h = std::min<Eigen::Index>(kRows, Gt_.cols() - r);
+        out.segment(r, h).noalias() = Gt_.middleCols(r, h).transpose().cast<double>() * q;
     }
     return out;
 }
 
 std::size_t CrackSystem::matrixBytes() const {
-    return sizeof(double) * (C_.size() + D_.size() + denseSchur_.size()) + sizeof(float) * G_.size() +
+    return sizeof(double) * (C_.size() + D_.size() + denseSchur_.size()) + sizeof(float) * Gt_.size() +
            schur_.bytes() + lu_.bytes();
 }
 

@@ -12,7 +12,8 @@
 // crack mouths) and is factored by Cholesky as symmetric, from its columns S(:, new) = D(:, new) -
 // C^T K_R^-1 K^T C_new. When a crack grows, only the new unknowns' columns are computed and the
 // factor is extended by bordering (BorderedCholesky): D is folded into it and freed. Unknowns
-// whose basis function a changed mouth cut alters are assembled again and refactored last. A system
+// whose basis function a changed mouth cut alters are assembled again: they leave the factor by
+// rank-one updates and join it again last. A system
 // whose S is not numerically positive definite (carried cracks that leave a fragment's surface)
 // is factored by LU from then on (logged), S held in full and the LU extended block by block as
 // it grows (BorderedLU; factored anew in one block when the block pivoting loses accuracy).
@@ -67,9 +68,9 @@ private:
     CrackMesh& cracks_;
     const Blocks blocks_;
     Eigen::MatrixXd C_, D_;
-    // Single precision (half the bytes of the largest block): G only forms the right-hand side
-    // G q, in double, so the rounding stays near 1e-7 of it.
-    Eigen::MatrixXf G_;
+    // G^T (3m x 3k: grows by columns, in place), single precision (half the bytes of the largest
+    // block): G only forms the right-hand side G q, in double, so the rounding stays near 1e-7 of it.
+    Eigen::MatrixXf Gt_;
     Eigen::VectorXd loadOnCracks(const Eigen::VectorXd& tractions) const;  // G q
     Eigen::MatrixXd regularisedLoadSolve(const Eigen::MatrixXd& b) const;  // K_R^-1 K^T b
     BorderedCholesky schur_;      // S = D - C^T K_R^-1 K^T C; on LU, of S's leading positive definite slots

@@ -252,10 +252,11 @@ PairRelation relationOf(const Panel& x, const Panel& y) {
     }
 }
 
-PairIntegrals integrateSingular(const Panel& x, const Panel& y, const QuadratureSettings& settings) {
+PairIntegrals integrateSingular(const Panel& x, const Panel& y, const QuadratureSettings& settings,
+                                bool doubleLayer) {
     const PairRelation relation = relationOf(x, y);
-    const bool doubleLayer = relation != PairRelation::Identical && !coplanar(x, y);
-    Accumulator acc{x.normal, y.normal, doubleLayer, {}};
+    Accumulator acc{
+        x.normal, y.normal, doubleLayer && relation != PairRelation::Identical && !coplanar(x, y), {}};
     integrateSingular(x, y, relation,
                       relation == PairRelation::Identical    ? settings.identicalPoints
                       : relation == PairRelation::CommonEdge ? settings.edgePoints

@@ -79,8 +79,10 @@ struct QuadraturePanel {
     double diameter;
     std::array<PanelPoints, 4> points;  // by separatedRuleLevel
 };
-// Identical, edge- or vertex-adjacent pair by Sauter-Schwab quadrature.
-PairIntegrals integrateSingular(const Panel& x, const Panel& y, const QuadratureSettings& settings);
+// Identical, edge- or vertex-adjacent pair by Sauter-Schwab quadrature (without `doubleLayer`
+// the double-layer integrals are left zero).
+PairIntegrals integrateSingular(const Panel& x, const Panel& y, const QuadratureSettings& settings,
+                                bool doubleLayer = true);
 
 // Integrates the pair (x, y). Identical, edge- and vertex-adjacent pairs use Sauter-Schwab
 // quadrature; separated pairs use triangle rules whose degree grows as the pair gets closer.

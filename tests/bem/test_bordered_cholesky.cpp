@@ -9,6 +9,9 @@
 
 #include <Eigen/Cholesky>
 
+#include <algorithm>
+#include <vector>
+
 #include "../support/RandomMatrix.h"
 
 using namespace btfracture;
@@ -51,10 +54,6 @@ TEST(BorderedCholesky, GrownInBlocksSolvesLikeOneFactorisation) {
         for (int h : sizes) entries += h * (row0 += h);
         EXPECT_EQ(f.bytes(), sizeof(double) * entries);
         EXPECT_LT((f.product() - s).cwiseAbs().maxCoeff(), 1e-12 * s.cwiseAbs().maxCoeff());
-        // Columns of S from the factor, across and inside the extensions' panels.
-        for (const auto& [first, count] : {std::pair{0, 150}, {20, 45}, {149, 1}})
-            EXPECT_LT((f.productColumns(first, count) - s.middleCols(first, count)).cwiseAbs().maxCoeff(),
-                      1e-12 * s.cwiseAbs().maxCoeff());
     }
 }
 
@@ -95,6 +94,55 @@ TEST(BorderedCholesky, TruncatedFactorIsTheLeadingBlocksAndGrowsAgain) {
         f.solveInPlace(x);
         EXPECT_LT((s * x - b).norm(), 1e-12 * b.norm() * s.norm()) << rows;
         EXPECT_GT(f.diagonalRatio(), 0.0) << rows;
+    }
+}
+
+// Deleting rows and columns anywhere (inside a panel, across panels, the first and the last)
+// leaves the factor of the matrix without them, which then grows on like one factored anew; a
+// copy made before is not changed.
+TEST(BorderedCholesky, RemovedIndicesLeaveTheFactorOfTheRest) {
+    struct Case {
+        int n;
+        std::vector<int> extensions, removed;
+    };
+    const std::vector<Case> cases = {{120, {33, 64, 23}, {0}},
+                                     {120, {33, 64, 23}, {119}},
+                                     {120, {33, 64, 23}, {40, 41, 42}},
+                                     {120, {33, 64, 23}, {5, 34, 35, 36, 90, 118}},
+                                     {120, {33, 64, 23}, {33, 96, 97}},
+                                     {500, {150, 350}, {3, 4, 5, 260, 499}}};  // rebuilt in several panels
+    for (const auto& [size, extensions, removed] : cases) {
+        const Eigen::MatrixXd s = spdMatrix(size);
+        BorderedCholesky f = grown(s, extensions);
+        const BorderedCholesky original = f;  // shares f's panels
+        f.remove(removed);
+        std::vector<int> kept;
+        for (int i = 0; i < size; ++i)
+            if (std::find(removed.begin(), removed.end(), i) == removed.end()) kept.push_back(i);
+        const int n = static_cast<int>(kept.size());
+        ASSERT_EQ(f.size(), n);
+        Eigen::MatrixXd rest(n, n);
+        for (int a = 0; a < n; ++a)
+            for (int b = 0; b < n; ++b) rest(a, b) = s(kept[a], kept[b]);
+        EXPECT_LT((f.product() - rest).cwiseAbs().maxCoeff(), 1e-12 * s.cwiseAbs().maxCoeff()) << removed[0];
+        // Grown again by the removed indices, now last.
+        Eigen::MatrixXd border(size, static_cast<int>(removed.size()));
+        std::vector<int> order = kept;
+        order.insert(order.end(), removed.begin(), removed.end());
+        for (int a = 0; a < size; ++a)
+            for (int b = 0; b < border.cols(); ++b) border(a, b) = s(order[a], removed[b]);
+        ASSERT_TRUE(f.extend(border));
+        Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(size, -1.0, 2.0);
+        const Eigen::VectorXd b = x;
+        f.solveInPlace(x);
+        Eigen::MatrixXd permuted(size, size);
+        for (int a = 0; a < size; ++a)
+            for (int c = 0; c < size; ++c) permuted(a, c) = s(order[a], order[c]);
+        EXPECT_LT((permuted * x - b).norm(), 1e-12 * b.norm() * s.norm()) << removed[0];
+        EXPECT_GT(f.diagonalRatio(), 0.0);
+        // The copy is the factor of the whole matrix still.
+        ASSERT_EQ(original.size(), size);
+        EXPECT_LT((original.product() - s).cwiseAbs().maxCoeff(), 1e-12 * s.cwiseAbs().maxCoeff());
     }
 }
 
