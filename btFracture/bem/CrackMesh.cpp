@@ -20,6 +20,7 @@ int CrackMesh::addNode(const Eigen::Vector3d& position) {
     surfaceNode_.push_back(kUnclassified);
     surfaceEdge_.push_back({-1, -1});
     surfaceTriangle_.push_back(-1);
+    held_.push_back(0);
     return nodeCount() - 1;
 }
 
@@ -114,6 +115,15 @@ std::vector<int> CrackMesh::refreshUnknowns(const SurfaceMesh& body) {
     return refreshUnknowns();
 }
 
+void CrackMesh::holdShut(const std::vector<int>& nodes) {
+    for (int i : nodes) {
+        if (unknown_[i] >= 0)
+            throw Error("CrackMesh: node " + std::to_string(i) +
+                        " already carries an opening; it cannot be held shut");
+        held_[i] = 1;
+    }
+}
+
 std::vector<int> CrackMesh::holdAsFront(const std::vector<std::pair<int, int>>& edges, int kept) {
     for (const auto& [a, b] : edges) frontChords_.insert({std::min(a, b), std::max(a, b)});
     for (int k = kept; k < unknownCount_; ++k) unknown_[nodeOfUnknown_[k]] = -1;
@@ -177,7 +187,7 @@ std::vector<int> CrackMesh::refreshUnknowns() {
         if (onFront[i] && unknown_[i] >= 0)
             throw Error("CrackMesh: node " + std::to_string(i) +
                         " returned to the front; sheets may only grow");
-        if (!onFront[i] && unknown_[i] < 0 && !nodeTriangles_[i].empty()) {
+        if (!onFront[i] && unknown_[i] < 0 && !nodeTriangles_[i].empty() && !held_[i]) {
             unknown_[i] = unknownCount_++;
             nodeOfUnknown_.push_back(i);
             activated.push_back(i);

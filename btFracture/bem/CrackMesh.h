@@ -7,7 +7,8 @@
 // opens there: its boundary nodes on the surface (on a surface node, edge or triangle) are mouth
 // nodes and carry unknowns like interior nodes, except where the front meets the surface (a node
 // on the surface next to a front node inside); see FORMULATION.md, "Cracks". Boundary nodes
-// anywhere else (outside the body) are front. Sheets only grow by triangles
+// anywhere else (outside the body) are front, and nodes held shut (holdShut: carried sheets'
+// nodes outside the fragment) carry no opening either. Sheets only grow by triangles
 // attached at their boundary, so an unknown node's support never changes and the crack blocks
 // can be extended incrementally.
 #include <btFracture/bem/PairIntegrals.h>
@@ -39,6 +40,10 @@ public:
     // MouthCut), withdraws the unknowns numbered from `kept` on and renumbers (nodes with earlier
     // unknowns keep them). Returns the nodes numbered anew.
     std::vector<int> holdAsFront(const std::vector<std::pair<int, int>>& edges, int kept);
+    // Keeps the given nodes at zero opening from now on, interior ones too (carried sheets' nodes
+    // outside the fragment that carries them); they must not carry an unknown yet.
+    void holdShut(const std::vector<int>& nodes);
+    bool heldShut(int i) const { return held_[i] != 0; }
 
     int nodeCount() const { return static_cast<int>(nodes_.size()); }
     int triangleCount() const { return static_cast<int>(triangles_.size()); }
@@ -98,6 +103,7 @@ private:
     std::vector<int> surfaceNode_;  // surface node the crack node lies on, -1 none
     std::vector<std::array<int, 2>> surfaceEdge_;
     std::vector<int> surfaceTriangle_;
+    std::vector<char> held_;  // held shut (holdShut)
     // (lower, higher node); front chords: sheet edges between surface nodes that are no mouth
     // edges (across a thin wall, or held by holdAsFront)
     std::set<std::pair<int, int>> chordChecked_, frontChords_;

@@ -253,7 +253,25 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const CrackS
         std::vector<int> all(s.carriedCracks.sheetCount());
         for (int i = 0; i < static_cast<int>(all.size()); ++i) all[i] = i;
         CrackMesh moved = s.carriedCracks.extractSheets(all, shift);
+        // The parent's sheets reach into the other fragments too. Every node of a triangle with a
+        // corner outside this one is held shut, so that each opening's hat lies inside the body (a
+        // hat reaching outside made S indefinite: FORMULATION.md, "Mouth").
+        std::vector<char> outsideNode(moved.nodeCount(), 0), held(moved.nodeCount(), 0);
+        for (int n = 0; n < moved.nodeCount(); ++n) outsideNode[n] = !mesh.encloses(moved.node(n));
+        for (int t = 0; t < moved.triangleCount(); ++t) {
+            const auto& tri = moved.triangle(t);
+            if (outsideNode[tri[0]] || outsideNode[tri[1]] || outsideNode[tri[2]])
+                for (int n : tri) held[n] = 1;
+        }
+        std::vector<int> outside;
+        for (int n = 0; n < moved.nodeCount(); ++n)
+            if (held[n]) outside.push_back(n);
+        moved.holdShut(outside);
         moved.refreshUnknowns();
+        if (!outside.empty())
+            logf(LogLevel::Debug, body.name(), ": ", outside.size(), " of ", moved.nodeCount(),
+                 " nodes of carried crack sheets lie outside the fragment or on triangles leaving it; held "
+                 "shut");
         s.cutTriangles = sheetTriangleCounts(moved);  // the parent cut them
         s.fracture->cracks() = std::move(moved);
         s.carriedCracks = CrackMesh();

@@ -4,6 +4,7 @@
 // closed-form solutions (validation.md (a)).
 #include <btFracture/bem/CrackSystem.h>
 #include <btFracture/bem/InteriorStress.h>
+#include <btFracture/core/Error.h>
 #include <btFracture/core/Primitives.h>
 #include <btFracture/core/ThreadLimit.h>
 #include <btFracture/fracture/CrackSeed.h>
@@ -259,4 +260,32 @@ TEST(CrackSystem, CrackFacesAreTractionFreeUnderRefinement) {
     EXPECT_LT(worst[0], 0.1);
     EXPECT_LT(worst[1], 0.05);
     EXPECT_GT(worst[0] / worst[1], 1.6);
+}
+
+// Nodes held shut (carried sheets' nodes outside a fragment) get no unknown, interior ones too,
+// and open nowhere; a node that already carries an opening cannot be held.
+TEST(CrackSystem, NodesHeldShutCarryNoOpening) {
+    const ElasticSolver solver(SurfaceMesh(makeBox({0.4, 0.4, 0.4}, 4, 4, 4)), kMaterial);
+    Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
+    sigma(2, 2) = 1e6;
+    const Eigen::VectorXd q = uniformStressTractions(solver.mesh(), sigma);
+    CrackMesh cracks;
+    CrackSystem system(solver, cracks, CrackSystem::Blocks::Fold);
+    addDiscCrack(system.cracks(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.1, 3);
+    CrackMesh& mesh = system.cracks();
+    int centre = 0;  // the node nearest the disc's centre: interior
+    for (int i = 1; i < mesh.nodeCount(); ++i)
+        if (mesh.node(i).norm() < mesh.node(centre).norm()) centre = i;
+    mesh.holdShut({centre});
+    system.update();
+    EXPECT_TRUE(mesh.heldShut(centre));
+    EXPECT_EQ(mesh.unknownOf(centre), -1);
+    EXPECT_GT(mesh.unknownCount(), 0);
+    const Eigen::VectorXd w = system.nodalOpenings(system.solve(q));
+    EXPECT_EQ(w.segment<3>(3 * centre).norm(), 0.0);
+    double largest = 0.0;
+    for (int i = 0; i < mesh.nodeCount(); ++i) largest = std::max(largest, w.segment<3>(3 * i).norm());
+    EXPECT_GT(largest, 0.0);
+    const int opened = mesh.nodeOfUnknown()[0];
+    EXPECT_THROW(mesh.holdShut({opened}), Error);
 }
