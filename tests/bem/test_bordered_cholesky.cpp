@@ -76,8 +76,8 @@ TEST(BorderedCholesky, RejectsABorderThatIsNotPositiveDefinite) {
 }
 
 // Truncated inside a block or at a block's edge, the factor is that of the leading block, and it
-// grows again from there like one grown to that size (the crack system refactors from the first
-// slot whose unknown's basis function changed).
+// grows again from there like one grown to that size (on LU, the crack system keeps the Cholesky
+// factor of S's leading slots only up to the first slot whose unknown's basis function changed).
 TEST(BorderedCholesky, TruncatedFactorIsTheLeadingBlocksAndGrowsAgain) {
     const Eigen::MatrixXd s = spdMatrix(120);
     for (int rows : {0, 33, 50, 97}) {
