@@ -455,7 +455,7 @@ int CrackSystem::update() {
             }
         } else {
             growDense(denseSchur_(keptRows, keptRows));
-            factor.truncate(std::min(factor.size(), first3));
+            factor.truncate(first3);
             // Back to Cholesky after a change if the kept part allows it: not while the kept rows
             // still hold, unchanged, the block whose extension failed (a principal block of a
             // matrix that is not positive definite is not either).

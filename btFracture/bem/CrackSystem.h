@@ -14,9 +14,9 @@
 // factor is extended by bordering (BorderedCholesky): D is folded into it and freed. Unknowns
 // whose basis function a changed mouth cut alters are assembled again: they leave the factor by
 // rank-one updates and join it again last. A system
-// whose S is not numerically positive definite (carried cracks that leave a fragment's surface)
-// is factored by LU from then on (logged), S held in full and the LU extended block by block as
-// it grows (BorderedLU; factored anew in one block when the block pivoting loses accuracy).
+// whose S is not numerically positive definite (crack nodes just under the surface, sheets that
+// nearly cut a body through) is factored by LU from then on (logged), S held in full and the LU extended
+// block by block as it grows (BorderedLU; factored anew in one block when the block pivoting loses accuracy).
 #include <btFracture/bem/BorderedCholesky.h>
 #include <btFracture/bem/BorderedLU.h>
 #include <btFracture/bem/CrackMesh.h>

@@ -256,20 +256,20 @@ void buildBem(BemFractureState& s, const btFractureRigidBody& body, const CrackS
         // The parent's sheets reach into the other fragments too. Every node of a triangle with a
         // corner outside this one is held shut, so that each opening's hat lies inside the body (a
         // hat reaching outside made S indefinite: FORMULATION.md, "Mouth").
-        std::vector<char> outsideNode(moved.nodeCount(), 0), held(moved.nodeCount(), 0);
-        for (int n = 0; n < moved.nodeCount(); ++n) outsideNode[n] = !mesh.encloses(moved.node(n));
+        std::vector<char> outside(moved.nodeCount(), 0), held(moved.nodeCount(), 0);
+        for (int n = 0; n < moved.nodeCount(); ++n) outside[n] = !mesh.encloses(moved.node(n));
         for (int t = 0; t < moved.triangleCount(); ++t) {
             const auto& tri = moved.triangle(t);
-            if (outsideNode[tri[0]] || outsideNode[tri[1]] || outsideNode[tri[2]])
+            if (outside[tri[0]] || outside[tri[1]] || outside[tri[2]])
                 for (int n : tri) held[n] = 1;
         }
-        std::vector<int> outside;
+        std::vector<int> heldNodes;
         for (int n = 0; n < moved.nodeCount(); ++n)
-            if (held[n]) outside.push_back(n);
-        moved.holdShut(outside);
+            if (held[n]) heldNodes.push_back(n);
+        moved.holdShut(heldNodes);
         moved.refreshUnknowns();
-        if (!outside.empty())
-            logf(LogLevel::Debug, body.name(), ": ", outside.size(), " of ", moved.nodeCount(),
+        if (!heldNodes.empty())
+            logf(LogLevel::Debug, body.name(), ": ", heldNodes.size(), " of ", moved.nodeCount(),
                  " nodes of carried crack sheets lie outside the fragment or on triangles leaving it; held "
                  "shut");
         s.cutTriangles = sheetTriangleCounts(moved);  // the parent cut them
