@@ -380,22 +380,34 @@ int CrackSystem::update() {
                 }
             }
         };
-        // The pairs' integrals in parallel, then their blocks added in pair order (deterministic).
+        // The pairs' integrals in parallel, then their blocks added in pair order (deterministic),
+        // a chunk of pairs at a time: the coefficients of all pairs at once took 64 bytes a pair,
+        // hundreds of MB at thousands of unknowns.
+        constexpr std::size_t kChunk = std::size_t(1) << 16;
         std::vector<std::pair<int, int>> pairs;
+        std::vector<PairCoefficients> coeffs(kChunk);
+        pairs.reserve(kChunk);
+        const auto addPairs = [&] {
+            const int n = static_cast<int>(pairs.size());
+#pragma omp parallel for schedule(dynamic, 64)
+            for (int i = 0; i < n; ++i)
+                coeffs[i] = coefficientsOf(
+                    integrate(elements[pairs[i].first].panel, elements[pairs[i].second].panel, q, false), mu, nu);
+            for (int i = 0; i < n; ++i) {
+                const auto [x, y] = pairs[i];
+                addBlock(elements[x], elements[y], coeffs[i], false);
+                if (y != x) addBlock(elements[x], elements[y], coeffs[i], true);
+            }
+            pairs.clear();
+        };
         const int count = static_cast<int>(elements.size());
         for (int x = 0; x < count; ++x)
             for (int y = x; y < count; ++y)
-                if (touchesRedo[x] || touchesRedo[y]) pairs.emplace_back(x, y);
-        std::vector<PairCoefficients> coeffs(pairs.size());
-#pragma omp parallel for schedule(dynamic, 64)
-        for (int i = 0; i < static_cast<int>(pairs.size()); ++i)
-            coeffs[i] = coefficientsOf(
-                integrate(elements[pairs[i].first].panel, elements[pairs[i].second].panel, q, false), mu, nu);
-        for (std::size_t i = 0; i < pairs.size(); ++i) {
-            const auto [x, y] = pairs[i];
-            addBlock(elements[x], elements[y], coeffs[i], false);
-            if (y != x) addBlock(elements[x], elements[y], coeffs[i], true);
-        }
+                if (touchesRedo[x] || touchesRedo[y]) {
+                    pairs.emplace_back(x, y);
+                    if (pairs.size() == kChunk) addPairs();
+                }
+        addPairs();
 
         const double integrals = phase.seconds();
         // The blocks in unknown order, the redone unknowns' columns (and rows of G, D) replaced.
