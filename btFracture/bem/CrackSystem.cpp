@@ -392,7 +392,8 @@ int CrackSystem::update() {
 #pragma omp parallel for schedule(dynamic, 64)
             for (int i = 0; i < n; ++i)
                 coeffs[i] = coefficientsOf(
-                    integrate(elements[pairs[i].first].panel, elements[pairs[i].second].panel, q, false), mu, nu);
+                    integrate(elements[pairs[i].first].panel, elements[pairs[i].second].panel, q, false), mu,
+                    nu);
             for (int i = 0; i < n; ++i) {
                 const auto [x, y] = pairs[i];
                 addBlock(elements[x], elements[y], coeffs[i], false);
