@@ -50,9 +50,27 @@ constexpr int kRefinementIterations = 5;
 // Target lengths grow by at most this much per unit distance away from a thin part.
 constexpr double kGrading = 0.5;
 
-void splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const EdgeLengthField& field) {
+// Splits allowed per call, in multiples of the faces the base length needs (or of the faces
+// there are, if more): sizing sites and refinement balls ask for a few times more faces at most.
+constexpr long kMaxSplitsPerFace = 20;
+
+// False, the mesh split part of the way, where the splits would exceed the limit.
+bool splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const EdgeLengthField& field) {
     // Longest edge first: its new edges are then at most sqrt(3)/2 as long as it was (median
-    // of a triangle whose longest edge is split), so this ends even among degenerate triangles.
+    // of a triangle whose longest edge is split), so this ends among degenerate triangles. Not
+    // where the surface folds onto itself: a fragment's BEM source gave back an edge of the same
+    // length after every split (millions, until memory ran out), hence the limit.
+    double area = 0.0;
+    for (int f = 0; f < mesh.faceSlots(); ++f)
+        if (mesh.faceAlive(f)) {
+            const auto v = mesh.faceVertices(f);
+            area += 0.5 * (mesh.position(v[1]) - mesh.position(v[0]))
+                              .cross(mesh.position(v[2]) - mesh.position(v[0]))
+                              .norm();
+        }
+    const double equilateral = std::sqrt(3.0) / 4.0 * field.base() * field.base();
+    const long limit = kMaxSplitsPerFace * std::max<long>(mesh.faceCount(), std::lround(area / equilateral));
+    long splits = 0;
     std::priority_queue<std::pair<double, int>> queue;
     auto push = [&](int h) {
         if (mesh.twin(h) < h) h = mesh.twin(h);
@@ -72,6 +90,7 @@ void splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const E
         const Eigen::Vector3d midpoint =
             0.5 * (mesh.position(mesh.origin(h)) + mesh.position(mesh.target(h)));
         const Eigen::Vector3d projected = edgeMidpointOnSurface(mesh, surface, h);
+        if (++splits > limit) return false;
         const int m = mesh.splitEdge(h, (projected - midpoint).norm() <= 0.1 * length ? projected : midpoint);
         // Every edge of the four faces at m: the split renumbered some of the outer ones.
         mesh.forEachOutgoing(m, [&](int g) {
@@ -79,6 +98,7 @@ void splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const E
             push(HalfEdgeMesh::next(g));
         });
     }
+    return true;
 }
 
 void collapseShortEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const EdgeLengthField& field) {
@@ -147,13 +167,15 @@ void relaxTangentially(HalfEdgeMesh& mesh, const ClosestPointTree& surface, doub
 }
 
 // One iteration of Botsch & Kobbelt's isotropic remeshing.
-void remeshIteration(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const EdgeLengthField& field,
+// False where splitting long edges did not end (splitLongEdges).
+bool remeshIteration(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const EdgeLengthField& field,
                      double smoothingStep) {
-    splitLongEdges(mesh, surface, field);
+    if (!splitLongEdges(mesh, surface, field)) return false;
     collapseShortEdges(mesh, surface, field);
     flipTowardsRegularValence(mesh);
     relaxTangentially(mesh, surface, smoothingStep, field);
     mesh.compact();
+    return true;
 }
 
 // Steers the triangle count to the target: faces scale with 1 / L^2. With `capped`, the base
@@ -302,7 +324,9 @@ RemeshPass remeshPass(const RemeshContext& context, Sizing sizing) {
         field.setSites(sites, uniformBase, kGrading, sizing == Sizing::WithinTarget);
     const bool capped = sizing == Sizing::ThinPartsOwn && !sites.empty();
     for (int iteration = 0; iteration < options.iterations; ++iteration) {
-        remeshIteration(mesh, surface, field, options.smoothingStep);
+        if (!remeshIteration(mesh, surface, field, options.smoothingStep))
+            throw Error(source + ": BEM remesh at " + std::to_string(targetTriangles) +
+                        " triangles: splitting long edges does not end (the surface folds onto itself)");
         if (iteration + 2 < options.iterations) steerCount(mesh, field, targetTriangles, uniformBase, capped);
         budget.check("isotropic remeshing");
     }
@@ -336,11 +360,20 @@ RemeshPass remeshPass(const RemeshContext& context, Sizing sizing) {
             field.refine(centres[i], kRefinementRadius * lengths[i], 0.5 * lengths[i] / field.at(centres[i]));
         logf(LogLevel::Info, source, ": target edge length halved around ", centres.size(),
              " intersecting triangles");
-        for (int iteration = 0; iteration < kRefinementIterations; ++iteration) {
-            remeshIteration(mesh, surface, field, options.smoothingStep);
+        const HalfEdgeMesh unrefined = mesh;
+        bool refined = true;
+        for (int iteration = 0; iteration < kRefinementIterations && refined; ++iteration) {
+            refined = remeshIteration(mesh, surface, field, options.smoothingStep);
             if (iteration + 2 < kRefinementIterations)
                 steerCount(mesh, field, targetTriangles, uniformBase, capped);
             budget.check("local refinement");
+        }
+        if (!refined) {  // the pairs stay (warned below)
+            logf(LogLevel::Info, source,
+                 ": local refinement stopped, splitting long edges did not end there ",
+                 "(the surface folds onto itself)");
+            mesh = unrefined;
+            break;
         }
         edgeLength = field.base();
         const QualityRepairResult more =

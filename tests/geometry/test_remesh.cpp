@@ -193,6 +193,22 @@ TEST(Remesh, TimeBudgetEndsARemeshWithAClearError) {
     EXPECT_THROW(remeshForBem(bunny(), 500, options), Error);
 }
 
+// A fragment's BEM source that folds onto itself: the local refinement around its intersecting
+// triangles split one edge again and again (the same length back after every split) until memory
+// ran out. The refinement now stops there and the later passes separate the triangles.
+TEST(Remesh, FoldedSourceEndsWithoutRunawaySplitting) {
+    TriangleMesh input = readMesh(std::string(BTFRACTURE_TEST_DATA_DIR) + "/remesh/folded_bem_source.obj");
+    input.name = "folded source";
+    RemeshOptions options;  // as BemFractureEngine builds a fragment's BEM
+    options.maxRefinements = 1;
+    options.thicknessSizing = RemeshOptions::ThicknessSizing::WhenUniformFails;
+    const TriangleMesh output = remeshForBem(input, 1500, options);
+    const MeshDefects defects = inspectMesh(output);
+    EXPECT_TRUE(defects.isClosedSolid()) << defects.describe();
+    EXPECT_EQ(defects.intersectingPairs, 0);
+    EXPECT_LT(output.triangles.size(), 3000u);  // measured 1,870
+}
+
 TEST(Remesh, BunnyAtThreeResolutions) {
     checkBemMesh(bunny(), 500, {0.05, 0.02});
     checkBemMesh(bunny(), 1000, {0.035, 0.01});
