@@ -62,12 +62,7 @@ bool splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const E
     // length after every split (millions, until memory ran out), hence the limit.
     double area = 0.0;
     for (int f = 0; f < mesh.faceSlots(); ++f)
-        if (mesh.faceAlive(f)) {
-            const auto v = mesh.faceVertices(f);
-            area += 0.5 * (mesh.position(v[1]) - mesh.position(v[0]))
-                              .cross(mesh.position(v[2]) - mesh.position(v[0]))
-                              .norm();
-        }
+        if (mesh.faceAlive(f)) area += 0.5 * mesh.faceAreaNormal(f).norm();
     const double equilateral = std::sqrt(3.0) / 4.0 * field.base() * field.base();
     const long limit = kMaxSplitsPerFace * std::max<long>(mesh.faceCount(), std::lround(area / equilateral));
     long splits = 0;
@@ -85,12 +80,12 @@ bool splitLongEdges(HalfEdgeMesh& mesh, const ClosestPointTree& surface, const E
         const auto [length, h] = queue.top();
         queue.pop();
         if (mesh.twin(h) < h || mesh.edgeLength(h) != length) continue;  // changed since it was queued
+        if (++splits > limit) return false;
         // The midpoint goes onto the surface only when that moves it little (a tenth of the
         // edge), which keeps the new edges shorter than this one; relaxation projects the rest.
         const Eigen::Vector3d midpoint =
             0.5 * (mesh.position(mesh.origin(h)) + mesh.position(mesh.target(h)));
         const Eigen::Vector3d projected = edgeMidpointOnSurface(mesh, surface, h);
-        if (++splits > limit) return false;
         const int m = mesh.splitEdge(h, (projected - midpoint).norm() <= 0.1 * length ? projected : midpoint);
         // Every edge of the four faces at m: the split renumbered some of the outer ones.
         mesh.forEachOutgoing(m, [&](int g) {
