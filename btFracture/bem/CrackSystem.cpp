@@ -584,7 +584,7 @@ CrackSystem::Solution CrackSystem::solveMonolithic(const Eigen::VectorXd& q) con
     A.bottomLeftCorner(k3, n3) = C_.transpose();
     A.bottomRightCorner(k3, k3) = D;
     Eigen::VectorXd rhs(n3 + k3);
-    rhs.head(n3) = K.transpose() * (solver_.operators().tractionToLoad * q);
+    rhs.head(n3) = K.transpose() * (solver_.load(q));
     rhs.tail(k3) = loadOnCracks(q);
     const Eigen::VectorXd x = A.partialPivLu().solve(rhs);
     return {x.head(n3), x.tail(k3)};

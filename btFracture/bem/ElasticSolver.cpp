@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace btfracture {
@@ -40,9 +41,17 @@ void lowerGram(const Eigen::MatrixXd& K, Eigen::MatrixXd& out) {
 ElasticSolver::ElasticSolver(SurfaceMesh mesh, const Material& material,
                              const ElasticSolverSettings& settings)
     : mesh_(std::move(mesh)), material_(material), settings_(settings) {
+    assembleAndFactor();
+}
+
+void ElasticSolver::assembleAndFactor() {
     Timer timer;
-    operators_ = assembleBoundaryOperators(mesh_, {material.shearModulus(), material.poissonRatio()},
-                                           settings.quadrature);
+    {
+        BoundaryOperators ops = assembleBoundaryOperators(
+            mesh_, {material_.shearModulus(), material_.poissonRatio()}, settings_.quadrature);
+        stiffness_ = std::move(ops.stiffness);
+        tractionToLoad_ = ops.tractionToLoad.cast<float>();
+    }
     // Rows of T scaled to unit length: the regulariser then has the size of K^T K at any body
     // size (unscaled, translation rows grow as L^2 and rotation rows as L^3 while K grows as L,
     // so a millimetre body's K_R was singular to machine precision: rcond 2e-16). The null space,
@@ -54,7 +63,7 @@ ElasticSolver::ElasticSolver(SurfaceMesh mesh, const Material& material,
 
     // Eq. 3: K_R = K^T K + gamma T^T T, gamma = (tr(K) / 3n)^2. K is symmetric, so K^T K = K K.
     timer.restart();
-    const Eigen::MatrixXd& K = operators_.stiffness;
+    const Eigen::MatrixXd& K = stiffness_;
     const double n3 = static_cast<double>(K.rows());
     gamma_ = (K.trace() / n3) * (K.trace() / n3);
     lowerGram(K, factor_);
@@ -67,7 +76,7 @@ ElasticSolver::ElasticSolver(SurfaceMesh mesh, const Material& material,
     rcond_ = llt.info() == Eigen::Success ? llt.rcond() : 0.0;
     if (llt.info() != Eigen::Success || !(rcond_ > 1e-15)) {
         std::ostringstream msg;
-        msg << mesh_.triangleCount() << "-triangle BEM system of material '" << material.name()
+        msg << mesh_.triangleCount() << "-triangle BEM system of material '" << material_.name()
             << "' cannot be factored (reciprocal condition estimate " << rcond_
             << "); the mesh is probably degenerate (slivers, near-coincident nodes)";
         throw Error(msg.str());
@@ -75,6 +84,40 @@ ElasticSolver::ElasticSolver(SurfaceMesh mesh, const Material& material,
     if (rcond_ < 1e-12)
         logf(LogLevel::Warning, "BEM system of ", mesh_.triangleCount(),
              " triangles is ill-conditioned (rcond ", rcond_, "); results may be inaccurate");
+}
+
+void ElasticSolver::releaseMatrices() {
+    stiffness_ = Eigen::MatrixXd();
+    tractionToLoad_ = decltype(tractionToLoad_)();
+    factor_ = Eigen::MatrixXd();
+}
+
+void ElasticSolver::restoreMatrices() {
+    if (!resident()) assembleAndFactor();
+}
+
+void ElasticSolver::requireResident(const char* what) const {
+    if (!resident())
+        throw Error(std::string("ElasticSolver::") + what + ": the BEM matrices of this " +
+                    std::to_string(mesh_.triangleCount()) +
+                    "-triangle mesh were released; call restoreMatrices()");
+}
+
+const Eigen::MatrixXd& ElasticSolver::stiffness() const {
+    requireResident("stiffness");
+    return stiffness_;
+}
+
+Eigen::VectorXd ElasticSolver::load(const Eigen::VectorXd& q) const {
+    requireResident("load");
+    // A few rows at a time: the whole of F in double would be a temporary of twice its size.
+    constexpr int kRows = 64;
+    Eigen::VectorXd out(tractionToLoad_.rows());
+    for (Eigen::Index r = 0; r < tractionToLoad_.rows(); r += kRows) {
+        const Eigen::Index h = std::min<Eigen::Index>(kRows, tractionToLoad_.rows() - r);
+        out.segment(r, h).noalias() = tractionToLoad_.middleRows(r, h).cast<double>() * q;
+    }
+    return out;
 }
 
 double ElasticSolver::strainEnergy(const Eigen::VectorXd& q, const Eigen::VectorXd& u) const {
@@ -99,6 +142,7 @@ TractionResultant ElasticSolver::netLoad(const Eigen::VectorXd& q) const {
 }
 
 Eigen::MatrixXd ElasticSolver::solveRegularised(const Eigen::MatrixXd& rhs) const {
+    requireResident("solveRegularised");
     Eigen::MatrixXd x = rhs;
     forEachColumnBlock(x.cols(), 16, [&](int j0, int w) {
         auto xs = x.middleCols(j0, w);
@@ -124,14 +168,15 @@ Eigen::VectorXd ElasticSolver::displacements(const Eigen::VectorXd& q) const {
             << "); remove them first (paper Eq. 6, balanceTractions)";
         throw Error(msg.str());
     }
-    return displacementsFromLoad(operators_.tractionToLoad * q);
+    return displacementsFromLoad(load(q));
 }
 
 Eigen::VectorXd ElasticSolver::displacementsFromLoad(const Eigen::VectorXd& f) const {
-    const Eigen::VectorXd rhs = operators_.stiffness.transpose() * f;
+    requireResident("displacementsFromLoad");
+    const Eigen::VectorXd rhs = stiffness_.transpose() * f;
     Eigen::VectorXd u = solveRegularised(rhs);
     // Residual of K_R u = K^T f, formed without K_R.
-    const Eigen::VectorXd residual = operators_.stiffness.transpose() * (operators_.stiffness * u) +
+    const Eigen::VectorXd residual = stiffness_.transpose() * (stiffness_ * u) +
                                      gamma_ * rigidModes_.transpose() * (rigidModes_ * u) - rhs;
     const double relative = residual.norm() / std::max(rhs.norm(), std::numeric_limits<double>::min());
     if (!u.allFinite() || relative > 1e-6) {
@@ -144,7 +189,7 @@ Eigen::VectorXd ElasticSolver::displacementsFromLoad(const Eigen::VectorXd& f) c
 }
 
 std::size_t ElasticSolver::matrixBytes() const {
-    return sizeof(double) * (operators_.stiffness.size() + factor_.size() + operators_.tractionToLoad.size());
+    return sizeof(double) * (stiffness_.size() + factor_.size()) + sizeof(float) * tractionToLoad_.size();
 }
 
 }  // namespace btfracture

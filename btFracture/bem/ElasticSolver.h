@@ -58,8 +58,12 @@ public:
     // equation, not the Dirichlet-to-Neumann map.)
     double strainEnergy(const Eigen::VectorXd& tractions, const Eigen::VectorXd& displacements) const;
 
-    const Eigen::MatrixXd& stiffness() const { return operators_.stiffness; }
-    const BoundaryOperators& operators() const { return operators_; }
+    // K (throws once the matrices were released: releaseMatrices).
+    const Eigen::MatrixXd& stiffness() const;
+    // The load f = F q (3n) of P0 tractions q (3m [Pa]), in double from F's single-precision
+    // entries: F only forms this product, so the rounding stays near 1e-7 of f (and F takes half
+    // the bytes; at 1,500 triangles 41 of the BEM's 124 MB).
+    Eigen::VectorXd load(const Eigen::VectorXd& tractions) const;
     const Eigen::MatrixXd& regulariser() const { return rigidModes_; }  // T (6 x 3n), Eq. 1-2, unit rows
     double regularisationWeight() const { return gamma_; }
     double reciprocalCondition() const { return rcond_; }
@@ -67,14 +71,25 @@ public:
     // Bytes held by dense matrices (K, the Cholesky factor, F).
     std::size_t matrixBytes() const;
 
+    // K, F and the factor are a cache of the mesh: releaseMatrices frees them (the solves and
+    // the operator accessors then throw), restoreMatrices assembles and factors them again,
+    // bit-identical (the assembly is deterministic). The mesh, T and A stay.
+    void releaseMatrices();
+    void restoreMatrices();
+    bool resident() const { return factor_.size() > 0; }
+
 private:
+    void assembleAndFactor();
+    void requireResident(const char* what) const;
+
     SurfaceMesh mesh_;
     Material material_;
     ElasticSolverSettings settings_;
-    BoundaryOperators operators_;
-    Eigen::MatrixXd rigidModes_;       // T (6 x 3n)
-    Eigen::MatrixXd netLoadOperator_;  // A (6 x 3m)
-    Eigen::MatrixXd factor_;           // lower Cholesky factor of K_R
+    Eigen::MatrixXd stiffness_;  // K (BoundaryOperators::stiffness)
+    Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> tractionToLoad_;  // F
+    Eigen::MatrixXd rigidModes_;                                                            // T (6 x 3n)
+    Eigen::MatrixXd netLoadOperator_;                                                       // A (6 x 3m)
+    Eigen::MatrixXd factor_;  // lower Cholesky factor of K_R
     double gamma_ = 0.0;
     double rcond_ = 0.0;
     ElasticSolverTimings timings_;

@@ -30,6 +30,10 @@ FractureSolver::FractureSolver(const ElasticSolver& solver, MaterialField field,
 
 FractureSolver::~FractureSolver() = default;
 
+std::size_t FractureSolver::crackSystemBytes() const {
+    return full_ ? full_->matrixBytes() : 0;
+}
+
 void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
     cracks_.refreshUnknowns(
         solver_.mesh());  // cracks may have been added from outside (pre-cracks, carried cracks)
@@ -38,7 +42,7 @@ void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
     tractions_ = q;
     peakStress_ = -1.0;
     strainEnergy_ = -1.0;
-    load_ = solver_.operators().tractionToLoad * q;
+    load_ = solver_.load(q);
     solver_.netLoad(q);  // validates size
     if (settings_.method == FractureMethod::Hybrid && active_ == FractureMethod::Full &&
         meshElements() >= settings_.hybridElementThreshold)

@@ -90,6 +90,11 @@ public:
     // Front nodes that stopped for good (reached the surface head-on or met another crack).
     bool isArrested(int node) const { return node < static_cast<int>(arrested_.size()) && arrested_[node]; }
 
+    // FULL's crack system (S, its factor, K^T C): bytes held, and freeing it between events; the
+    // next event builds it again from the cracks (the same equations).
+    std::size_t crackSystemBytes() const;
+    void releaseCrackSystem() { full_.reset(); }
+
     // Surface displacements of the current state (FULL: Eq. 4 solution; EST: updated, §4.3).
     const Eigen::VectorXd& displacements() const { return displacements_; }
     // COD at every crack node (FULL: solved; EST: estimated when the node left the front).

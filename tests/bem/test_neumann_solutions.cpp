@@ -181,6 +181,32 @@ TEST(NeumannSolution, RigidMotionOfTheDataLeavesStressUnchanged) {
     EXPECT_LT((a.interiorStress(x) - b.interiorStress(x)).norm(), 1e-6 * sigma.norm());
 }
 
+// releaseMatrices / restoreMatrices (the engine's idle-matrix budget): a released solver
+// refuses to solve with an error that says so; restored, it gives the same displacements bit
+// for bit.
+TEST(NeumannSolution, ReleasedMatricesRestoreBitIdentically) {
+    Eigen::Matrix3d sigma;
+    sigma << 1e6, 2e5, 0, 2e5, -5e5, 1e5, 0, 1e5, 3e5;
+    ElasticSolver solver(SurfaceMesh(makeBox({0.5, 0.3, 0.25}, 4, 3, 2)), kMaterial);
+    const Eigen::VectorXd q = tractionsOf(solver.mesh(), sigma);
+    const Eigen::VectorXd before = solver.displacements(q);
+    const std::size_t bytes = solver.matrixBytes();
+    solver.releaseMatrices();
+    EXPECT_FALSE(solver.resident());
+    EXPECT_EQ(solver.matrixBytes(), 0u);
+    try {
+        solver.displacements(q);
+        FAIL() << "a released solver solved";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("released"), std::string::npos) << e.what();
+    }
+    solver.restoreMatrices();
+    EXPECT_EQ(solver.matrixBytes(), bytes);
+    const Eigen::VectorXd after = solver.displacements(q);
+    ASSERT_EQ(after.size(), before.size());
+    for (Eigen::Index i = 0; i < after.size(); ++i) EXPECT_EQ(after[i], before[i]) << "entry " << i;
+}
+
 TEST(NeumannSolution, FarQuadratureRulesKeepTheInteriorStress) {
     // Interior stress (Eq. 7) with the fewer-point rules for far triangles against 16 points on
     // every triangle, in a 1,280-triangle sphere under a pressure varying as 1 + z^2 / R^2
