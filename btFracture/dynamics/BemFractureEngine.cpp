@@ -28,6 +28,15 @@
 #include <vector>
 
 namespace btfracture {
+
+// The states whose BEM is built, in the order they were built, each with the engine's event
+// counter at its last event (for idleMatrixBudgetMB). Shared with the states, which leave it
+// when they are destroyed, so that bodies may outlive the engine.
+struct ResidentMatrices {
+    std::vector<FractureState*> states;  // BemFractureState
+    std::uint64_t events = 0;
+};
+
 namespace {
 
 // Everything one body needs to break, built lazily. Positions live in the "state frame": the
@@ -47,7 +56,47 @@ public:
     std::map<int, int> cutTriangles;             // crack sheet -> triangles already cut (no markers)
     std::unique_ptr<CrackFronts> fronts;         // voxel-resolution fronts (state frame)
     FrontAdvanceResult frontTally;               // marker arrests since the last cut (logged there)
+    std::shared_ptr<ResidentMatrices> resident;  // set once the BEM is built
+    std::uint64_t lastEvent = 0;                 // ResidentMatrices::events at this state's last event
+    std::string owner;                           // name of the body at its last event (for logs)
+
+    ~BemFractureState() override {
+        if (!resident) return;
+        const auto self = std::find(resident->states.begin(), resident->states.end(), this);
+        if (self != resident->states.end()) resident->states.erase(self);
+    }
+
+    std::size_t matrixBytes() const {
+        return (solver ? solver->matrixBytes() : 0) + (fracture ? fracture->crackSystemBytes() : 0);
+    }
 };
+
+// Before `current`'s event: the other states release their BEM and crack matrices, least
+// recently broken first, until the rest hold at most `budgetMB`.
+void releaseIdleMatrices(ResidentMatrices& resident, const BemFractureState& current, double budgetMB) {
+    std::vector<BemFractureState*> others;
+    double total = 0.0;
+    for (FractureState* state : resident.states) {
+        auto* s = static_cast<BemFractureState*>(state);
+        if (s == &current || s->matrixBytes() == 0) continue;
+        others.push_back(s);
+        total += static_cast<double>(s->matrixBytes());
+    }
+    std::sort(others.begin(), others.end(), [](const BemFractureState* a, const BemFractureState* b) {
+        return a->lastEvent < b->lastEvent;
+    });
+    constexpr double kMB = 1024.0 * 1024.0;
+    for (BemFractureState* s : others) {
+        if (total <= budgetMB * kMB) break;
+        const double bytes = static_cast<double>(s->matrixBytes());
+        total -= bytes;
+        s->solver->releaseMatrices();
+        s->fracture->releaseCrackSystem();
+        logf(LogLevel::Info, s->owner, ": its BEM and crack matrices (", bytes / kMB,
+             " MB) are released to keep idle bodies within ", budgetMB,
+             " MB (idleMatrixBudgetMB); built again if it breaks again");
+    }
+}
 
 void addTally(FrontAdvanceResult& into, const FrontAdvanceResult& r) {
     into.substeps += r.substeps;
@@ -366,9 +415,15 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
 
 }  // namespace
 
-BemFractureEngine::BemFractureEngine(const BemFractureEngineSettings& settings) : settings_(settings) {
+BemFractureEngine::BemFractureEngine(const BemFractureEngineSettings& settings)
+    : settings_(settings), resident_(std::make_shared<ResidentMatrices>()) {
     settings_.fracture.validate("BemFractureEngine settings");
     settings_.fragments.validate();
+    if (!(settings_.idleMatrixBudgetMB >= 0.0))
+        throw Error(
+            "BemFractureEngine settings: idleMatrixBudgetMB must be >= 0 (infinity keeps every body's), "
+            "got " +
+            std::to_string(settings_.idleMatrixBudgetMB));
 }
 
 double BemFractureEngine::meanCurvature(const btFractureRigidBody& body,
@@ -420,7 +475,20 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     outcome.timings.geometry += timer.seconds();
 
     timer.restart();
-    if (!s.solver) buildBem(s, body, settings_.fracture, settings_.voxelFronts, stats);
+    s.owner = body.name();
+    s.lastEvent = ++resident_->events;
+    releaseIdleMatrices(*resident_, s, settings_.idleMatrixBudgetMB);
+    if (!s.solver) {
+        buildBem(s, body, settings_.fracture, settings_.voxelFronts, stats);
+    } else if (!s.solver->resident()) {
+        s.solver->restoreMatrices();
+        logf(LogLevel::Info, body.name(), ": BEM matrices of ", s.solver->mesh().triangleCount(),
+             " triangles assembled and factored again in ", timer.seconds(), " s");
+    }
+    if (!s.resident) {
+        s.resident = resident_;
+        resident_->states.push_back(&s);
+    }
     // Contacts into the BEM frame, then J n / (t_c A_e) on the nearest triangles, balanced (Eq. 6).
     std::vector<BodyContact> local = contacts;
     const Eigen::Vector3d offset = s.solver->mesh().offset();

@@ -18,10 +18,12 @@
 #include <btFracture/geometry/FragmentClasses.h>
 
 #include <functional>
+#include <memory>
 
 namespace btfracture {
 
 class LevelSetBody;
+struct ResidentMatrices;
 
 // The engine's own settings; a body's method, resolutions and noise are its
 // FractureBodySettings.
@@ -31,6 +33,12 @@ struct BemFractureEngineSettings {
     // Cut the surface swept by the voxel-resolution crack fronts instead of the coarse crack
     // sheet (see the header comment; scene key effects.crack_cut).
     bool voxelFronts = true;
+    // BEM matrices (K, F, the factor of K_R) and FULL crack systems that bodies other than the
+    // one breaking may keep between events [MB]. Before an event, the bodies that broke least
+    // recently release theirs (logged) until the rest fit; a body that breaks again assembles
+    // and factors its BEM again (the same values) and rebuilds its crack system from its cracks.
+    // 0 keeps none; infinity keeps all.
+    double idleMatrixBudgetMB = 512.0;
 };
 
 class BemFractureEngine : public FractureEngine {
@@ -53,6 +61,7 @@ public:
 private:
     BemFractureEngineSettings settings_;
     CutObserver cutObserver_;
+    std::shared_ptr<ResidentMatrices> resident_;  // bodies whose BEM is built, for the budget
 };
 
 }  // namespace btfracture

@@ -27,6 +27,7 @@ std::unique_ptr<btDiscreteDynamicsWorld> FractureSceneWorldFactory::createWorld(
     auto world = std::make_unique<btFractureDynamicsWorld>(&dispatcher, &broadphase, &solver, &configuration);
     BemFractureEngineSettings settings = engine_;
     settings.voxelFronts = scene.effects.voxelFronts;
+    settings.idleMatrixBudgetMB = scene.effects.idleMatrixBudgetMB;
     auto engine = std::make_unique<BemFractureEngine>(settings);
     if (cutObserver_) engine->setCutObserver(cutObserver_);
     world->setFractureEngine(std::move(engine));

@@ -254,7 +254,7 @@ private:
     // effects: output formats, the run seed and the per-body fracture settings (after the bodies).
     void effects(const Json& value, const std::string& path, Scene& scene) const {
         requireObject(value, path, "an object");
-        allowOnly(value, path, {"outputs", "seed", "crack_cut", "fracture"});
+        allowOnly(value, path, {"outputs", "seed", "crack_cut", "idle_matrix_budget_mb", "fracture"});
         if (value.contains("outputs")) {
             const Json& list = value["outputs"];
             const std::string lpath = child(path, "outputs");
@@ -279,6 +279,10 @@ private:
         if (value.contains("crack_cut"))
             scene.effects.voxelFronts =
                 choice(value["crack_cut"], child(path, "crack_cut"), {"markers", "coarse_sheet"}) == 0;
+        if (value.contains("idle_matrix_budget_mb"))
+            scene.effects.idleMatrixBudgetMB =
+                nonNegative(value["idle_matrix_budget_mb"], child(path, "idle_matrix_budget_mb"),
+                            "a number of megabytes >= 0");
         if (value.contains("fracture")) {
             const Json& fracture = value["fracture"];
             const std::string fpath = child(path, "fracture");

@@ -8,6 +8,7 @@
 // Unknown keys are errors too, so that a typo never silently falls back to a default.
 #include <btFracture/core/Material.h>
 #include <btFracture/core/TriangleMesh.h>
+#include <btFracture/dynamics/BemFractureEngine.h>
 #include <btFracture/dynamics/FractureBodySettings.h>
 #include <btFracture/io/RenderSettings.h>
 
@@ -120,6 +121,8 @@ struct SceneEffects {
     // What a fracture event cuts into the level set (BemFractureEngineSettings::voxelFronts):
     // "markers" (the surface swept by the voxel-resolution fronts, default) or "coarse_sheet".
     bool voxelFronts = true;
+    // BEM and crack matrices idle bodies may keep [MB] (BemFractureEngineSettings::idleMatrixBudgetMB).
+    double idleMatrixBudgetMB = BemFractureEngineSettings().idleMatrixBudgetMB;
 };
 
 // Settings of one run that do not belong to the scene file (command line).
