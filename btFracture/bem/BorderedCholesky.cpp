@@ -95,6 +95,7 @@ void BorderedCholesky::remove(const std::vector<int>& indices) {
         const int lo = std::max(r0, p.row0), hi = p.row0 + h;
         if (lo < hi) W.block(lo - r0, 0, hi - lo, p.L.cols()) = p.L.middleRows(lo - p.row0, hi - lo);
     }
+    truncate(r0);  // the old rows r0 .. size() are in W now: freed before the new ones are made
     auto T = W.rightCols(m);
     std::vector<char> alive(m, 1);
     for (int j : indices) alive[j - r0] = 0;
@@ -121,7 +122,6 @@ void BorderedCholesky::remove(const std::vector<int>& indices) {
     for (int i = 0; i < m; ++i)
         if (alive[i]) keep.push_back(i);
     const int kept = static_cast<int>(keep.size());
-    truncate(r0);
     for (int a0 = 0; a0 < kept; a0 += kRemovedPanelRows) {
         const int h = std::min(kRemovedPanelRows, kept - a0);
         auto panel = std::make_shared<Panel>(Panel{r0 + a0, Eigen::MatrixXd::Zero(h, r0 + a0 + h)});

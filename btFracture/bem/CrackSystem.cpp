@@ -342,6 +342,7 @@ int CrackSystem::update() {
         savedG.middleCols(3 * i, 3) = Gt_.middleCols(3 * redo[i], 3);
         if (blocks_ == Blocks::Keep) savedD.middleCols(3 * i, 3) = D_.middleCols(3 * redo[i], 3);
     }
+    bool factorTaken = false;
     try {
         const int new3 = 3 * total, redo3 = 3 * static_cast<int>(redo.size());
 
@@ -447,9 +448,13 @@ int CrackSystem::update() {
             for (int j = kept3; j < new3; ++j)  // the new block symmetric, from its lower triangle
                 for (int i = kept3; i < j; ++i) grown(i, j) = grown(j, i);
         };
-        // A copy (sharing its panels), so that the factor is left as it was if this throws. On LU,
-        // the factor is the Cholesky factor of S's leading positive definite slots.
-        BorderedCholesky factor = schur_;
+        // Taken over, not copied: the rows remove() replaces are freed before the new ones are
+        // made (a copy would hold both: at 5,000 unknowns about 100 MB more). If this throws the
+        // system is left empty (below). On LU, the factor is the Cholesky factor of S's leading
+        // positive definite slots.
+        BorderedCholesky factor = std::move(schur_);
+        schur_ = BorderedCholesky();
+        factorTaken = true;
         bool dense = wasDense;
         int indefiniteRows = indefiniteRows_;
         if (!dense) {
@@ -523,6 +528,18 @@ int CrackSystem::update() {
         fingerprints_ = std::move(fingerprints);
         assembledUnknowns_ = total;
     } catch (const Error&) {
+        if (factorTaken) {  // the old factor is gone: empty, for the next update() to assemble anew
+            C_.resize(C_.rows(), 0);
+            Gt_.resize(Gt_.rows(), 0);
+            D_.resize(0, 0);
+            denseSchur_.resize(0, 0);
+            lu_ = BorderedLU();
+            indefiniteRows_ = 0;
+            slots_.clear();
+            fingerprints_.clear();
+            assembledUnknowns_ = 0;
+            throw;
+        }
         for (int i = 0; i < changed; ++i) {
             C_.middleCols(3 * redo[i], 3) = savedC.middleCols(3 * i, 3);
             Gt_.middleCols(3 * redo[i], 3) = savedG.middleCols(3 * i, 3);

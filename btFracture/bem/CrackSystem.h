@@ -42,8 +42,9 @@ public:
     const ElasticSolver& solver() const { return solver_; }
 
     // Numbers the unknowns of nodes that left the front and assembles their rows and columns.
-    // Returns the number of new unknown nodes. Throws btfracture::Error, leaving the system as it
-    // was, when the grown Schur complement is singular (a degenerate crack mesh).
+    // Returns the number of new unknown nodes. Throws btfracture::Error when the grown Schur
+    // complement is singular (a degenerate crack mesh), leaving the system empty: solve() then
+    // sees no crack unknowns, and the next update() assembles all of them again.
     int update();
 
     struct Solution {

@@ -29,9 +29,9 @@
 
 namespace btfracture {
 
-// The states whose BEM is built, in the order they were built, each with the engine's event
-// counter at its last event (for idleMatrixBudgetMB). Shared with the states, which leave it
-// when they are destroyed, so that bodies may outlive the engine.
+// The states whose BEM is built, in the order they were built, each with the engine's call
+// counter and the world's step at its last call (for idleMatrixBudgetMB). Shared with the
+// states, which leave it when they are destroyed, so that bodies may outlive the engine.
 struct ResidentMatrices {
     std::vector<FractureState*> states;  // BemFractureState
     std::uint64_t events = 0;
@@ -57,7 +57,8 @@ public:
     std::unique_ptr<CrackFronts> fronts;         // voxel-resolution fronts (state frame)
     FrontAdvanceResult frontTally;               // marker arrests since the last cut (logged there)
     std::shared_ptr<ResidentMatrices> resident;  // set once the BEM is built
-    std::uint64_t lastEvent = 0;                 // ResidentMatrices::events at this state's last event
+    std::uint64_t lastEvent = 0;                 // ResidentMatrices::events at this state's last call
+    std::uint64_t lastStep = 0;                  // FractureStatistics::steps at its last call
     std::string owner;                           // name of the body at its last event (for logs)
 
     ~BemFractureState() override {
@@ -71,16 +72,23 @@ public:
     }
 };
 
-// Before `current`'s event: the other states release their BEM and crack matrices, least
-// recently broken first, until the rest hold at most `budgetMB`.
-void releaseIdleMatrices(ResidentMatrices& resident, const BemFractureState& current, double budgetMB) {
+// Bodies the engine was called for within this many steps keep their matrices whatever the
+// budget: a body in lasting contact is called every step, and releasing it between two calls
+// would assemble its BEM again at every step.
+constexpr std::uint64_t kRecentSteps = 4;
+
+// The states other than `inUse` (none: every state) and other than those called within the last
+// kRecentSteps steps (but `justBroken`) release their BEM and crack matrices, least recently
+// called first, until the rest hold at most `budgetMB`.
+void releaseIdleMatrices(ResidentMatrices& resident, const BemFractureState* inUse,
+                         const BemFractureState* justBroken, std::uint64_t step, double budgetMB) {
     std::vector<BemFractureState*> others;
     double total = 0.0;
     for (FractureState* state : resident.states) {
         auto* s = static_cast<BemFractureState*>(state);
-        if (s == &current || s->matrixBytes() == 0) continue;
-        others.push_back(s);
+        if (s == inUse || s->matrixBytes() == 0) continue;
         total += static_cast<double>(s->matrixBytes());
+        if (s == justBroken || s->lastStep + kRecentSteps <= step) others.push_back(s);
     }
     std::sort(others.begin(), others.end(), [](const BemFractureState* a, const BemFractureState* b) {
         return a->lastEvent < b->lastEvent;
@@ -93,8 +101,8 @@ void releaseIdleMatrices(ResidentMatrices& resident, const BemFractureState& cur
         s->solver->releaseMatrices();
         s->fracture->releaseCrackSystem();
         logf(LogLevel::Info, s->owner, ": its BEM and crack matrices (", bytes / kMB,
-             " MB) are released to keep idle bodies within ", budgetMB,
-             " MB (idleMatrixBudgetMB); built again if it breaks again");
+             " MB) are released to keep bodies not called in the last ", kRecentSteps, " steps within ",
+             budgetMB, " MB (idleMatrixBudgetMB); built again if it breaks again");
     }
 }
 
@@ -477,7 +485,8 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     timer.restart();
     s.owner = body.name();
     s.lastEvent = ++resident_->events;
-    releaseIdleMatrices(*resident_, s, settings_.idleMatrixBudgetMB);
+    s.lastStep = stats.steps;
+    releaseIdleMatrices(*resident_, &s, nullptr, stats.steps, settings_.idleMatrixBudgetMB);
     if (!s.solver) {
         buildBem(s, body, settings_.fracture, settings_.voxelFronts, stats);
     } else if (!s.solver->resident()) {
@@ -514,6 +523,9 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     if (s.fracture->cracks().triangleCount() == trianglesBefore && !swept) return outcome;  // nothing cracked
 
     timer.restart();
+    // The cut and the fragments need no matrices: this body's may go too (it breaks apart, or
+    // assembles them again at its next call).
+    releaseIdleMatrices(*resident_, nullptr, &s, stats.steps, settings_.idleMatrixBudgetMB);
     const double meanSize = s.solver->mesh().meanDiameter();
     for (const auto& [sheet, cut] : sheetsToCut(s, 0.5 * meanSize + 3.0 * s.levelSet->voxelSize())) {
         TriangleMesh named = cut;

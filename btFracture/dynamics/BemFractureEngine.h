@@ -33,11 +33,12 @@ struct BemFractureEngineSettings {
     // Cut the surface swept by the voxel-resolution crack fronts instead of the coarse crack
     // sheet (see the header comment; scene key effects.crack_cut).
     bool voxelFronts = true;
-    // BEM matrices (K, F, the factor of K_R) and FULL crack systems that bodies other than the
-    // one breaking may keep between events [MB]. Before an event, the bodies that broke least
-    // recently release theirs (logged) until the rest fit; a body that breaks again assembles
-    // and factors its BEM again (the same values) and rebuilds its crack system from its cracks.
-    // 0 keeps none; infinity keeps all.
+    // BEM matrices (K, F, the factor of K_R) and FULL crack systems that idle bodies may keep
+    // [MB]. Before an engine call, and before a cracked body is cut, the bodies called least
+    // recently release theirs (logged) until all fit; bodies called within the last 4 steps
+    // keep theirs (lasting contacts). A body called again assembles and factors its BEM again
+    // (the same values) and rebuilds its crack system from its cracks. 0 keeps only the recent
+    // ones; infinity keeps all.
     double idleMatrixBudgetMB = 512.0;
 };
 
