@@ -612,13 +612,7 @@ Eigen::MatrixXd CrackSystem::regularisedLoadSolve(const Eigen::MatrixXd& b) cons
 }
 
 Eigen::VectorXd CrackSystem::loadOnCracks(const Eigen::VectorXd& q) const {
-    constexpr int kRows = 64;
-    Eigen::VectorXd out(Gt_.cols());
-    for (Eigen::Index r = 0; r < Gt_.cols(); r += kRows) {
-        const Eigen::Index h = std::min<Eigen::Index>(kRows, Gt_.cols() - r);
-        out.segment(r, h).noalias() = Gt_.middleCols(r, h).transpose().cast<double>() * q;
-    }
-    return out;
+    return productInDouble(Gt_.transpose(), q);
 }
 
 std::size_t CrackSystem::matrixBytes() const {

@@ -110,14 +110,7 @@ const Eigen::MatrixXd& ElasticSolver::stiffness() const {
 
 Eigen::VectorXd ElasticSolver::load(const Eigen::VectorXd& q) const {
     requireResident("load");
-    // A few rows at a time: the whole of F in double would be a temporary of twice its size.
-    constexpr int kRows = 64;
-    Eigen::VectorXd out(tractionToLoad_.rows());
-    for (Eigen::Index r = 0; r < tractionToLoad_.rows(); r += kRows) {
-        const Eigen::Index h = std::min<Eigen::Index>(kRows, tractionToLoad_.rows() - r);
-        out.segment(r, h).noalias() = tractionToLoad_.middleRows(r, h).cast<double>() * q;
-    }
-    return out;
+    return productInDouble(tractionToLoad_, q);
 }
 
 double ElasticSolver::strainEnergy(const Eigen::VectorXd& q, const Eigen::VectorXd& u) const {

@@ -20,6 +20,19 @@ void forEachColumnBlock(Eigen::Index columns, int width, Work&& work) {
     for (int j0 = 0; j0 < n; j0 += width) work(j0, std::min(width, n - j0));
 }
 
+// a q for a matrix a kept in single precision because it only ever forms this product, summed in
+// double a few rows at a time (the whole of a in double would be a temporary twice its size).
+template <class Float>
+Eigen::VectorXd productInDouble(const Eigen::MatrixBase<Float>& a, const Eigen::VectorXd& q) {
+    constexpr Eigen::Index kRows = 64;
+    Eigen::VectorXd out(a.rows());
+    for (Eigen::Index r = 0; r < a.rows(); r += kRows) {
+        const Eigen::Index h = std::min(kRows, a.rows() - r);
+        out.segment(r, h).noalias() = a.middleRows(r, h).template cast<double>() * q;
+    }
+    return out;
+}
+
 // a^T b for a (k x m) and b (k x n): an m x n matrix.
 Eigen::MatrixXd transposedProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
                                   const Eigen::Ref<const Eigen::MatrixXd>& b);

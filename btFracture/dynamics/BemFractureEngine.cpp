@@ -34,7 +34,7 @@ namespace btfracture {
 // states, which leave it when they are destroyed, so that bodies may outlive the engine.
 struct ResidentMatrices {
     std::vector<FractureState*> states;  // BemFractureState
-    std::uint64_t events = 0;
+    std::uint64_t calls = 0;
 };
 
 namespace {
@@ -57,9 +57,9 @@ public:
     std::unique_ptr<CrackFronts> fronts;         // voxel-resolution fronts (state frame)
     FrontAdvanceResult frontTally;               // marker arrests since the last cut (logged there)
     std::shared_ptr<ResidentMatrices> resident;  // set once the BEM is built
-    std::uint64_t lastEvent = 0;                 // ResidentMatrices::events at this state's last call
+    std::uint64_t lastCall = 0;                  // ResidentMatrices::calls at this state's last call
     std::uint64_t lastStep = 0;                  // FractureStatistics::steps at its last call
-    std::string owner;                           // name of the body at its last event (for logs)
+    std::string owner;                           // name of the body at its last call (for logs)
 
     ~BemFractureState() override {
         if (!resident) return;
@@ -90,9 +90,8 @@ void releaseIdleMatrices(ResidentMatrices& resident, const BemFractureState* inU
         total += static_cast<double>(s->matrixBytes());
         if (s == justBroken || s->lastStep + kRecentSteps <= step) others.push_back(s);
     }
-    std::sort(others.begin(), others.end(), [](const BemFractureState* a, const BemFractureState* b) {
-        return a->lastEvent < b->lastEvent;
-    });
+    std::sort(others.begin(), others.end(),
+              [](const BemFractureState* a, const BemFractureState* b) { return a->lastCall < b->lastCall; });
     constexpr double kMB = 1024.0 * 1024.0;
     for (BemFractureState* s : others) {
         if (total <= budgetMB * kMB) break;
@@ -102,7 +101,7 @@ void releaseIdleMatrices(ResidentMatrices& resident, const BemFractureState* inU
         s->fracture->releaseCrackSystem();
         logf(LogLevel::Info, s->owner, ": its BEM and crack matrices (", bytes / kMB,
              " MB) are released to keep bodies not called in the last ", kRecentSteps, " steps within ",
-             budgetMB, " MB (idleMatrixBudgetMB); built again if it breaks again");
+             budgetMB, " MB (idleMatrixBudgetMB); built again at its next call");
     }
 }
 
@@ -484,7 +483,7 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
 
     timer.restart();
     s.owner = body.name();
-    s.lastEvent = ++resident_->events;
+    s.lastCall = ++resident_->calls;
     s.lastStep = stats.steps;
     releaseIdleMatrices(*resident_, &s, nullptr, stats.steps, settings_.idleMatrixBudgetMB);
     if (!s.solver) {

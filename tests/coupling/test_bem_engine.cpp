@@ -196,6 +196,34 @@ TEST(BemEngine, VoxelFrontsSplitTheSlabDeterministically) {
     expectBitIdentical(a.poses, b.poses);
 }
 
+namespace {
+
+// Engine calls without a world: two 20 x 5 x 20 cm glass slabs at 300 BEM triangles, an engine
+// with the given idle budget, and a contact on the slabs' top face (its impulse set by the test).
+struct TwoSlabs {
+    explicit TwoSlabs(double idleMatrixBudgetMB) : engine(settingsWith(idleMatrixBudgetMB)) {
+        contact.point = Eigen::Vector3d(0.02, 0.025, 0.01);
+        contact.direction = -Eigen::Vector3d::UnitY();
+        contact.duration = 5e-5;
+    }
+    static BemFractureEngineSettings settingsWith(double idleMatrixBudgetMB) {
+        BemFractureEngineSettings settings;
+        settings.idleMatrixBudgetMB = idleMatrixBudgetMB;
+        return settings;
+    }
+    static FractureBodySettings slabSettings() {
+        FractureBodySettings settings;
+        settings.bemTriangleTarget = 300;
+        return settings;
+    }
+    inline static const btBoxShape box{btVector3(btScalar(0.1), btScalar(0.025), btScalar(0.1))};
+    BemFractureEngine engine;
+    btFractureRigidBody a{Material::glass(), box, slabSettings()}, b{Material::glass(), box, slabSettings()};
+    BodyContact contact;
+};
+
+}  // namespace
+
 // idleMatrixBudgetMB: with a budget of 0, slab A's BEM matrices are released while slab B
 // breaks and assembled again for A's next event; that event must come out exactly as with every
 // matrix kept (the assembly is deterministic). Bodies called within the last steps keep theirs.
@@ -205,17 +233,8 @@ TEST(BemEngine, ReleasedMatricesAreRebuiltIdentically) {
         int released = 0, rebuilt = 0;
     };
     auto run = [](double budgetMB) {
-        BemFractureEngineSettings settings;
-        settings.idleMatrixBudgetMB = budgetMB;
-        BemFractureEngine engine(settings);
-        FractureBodySettings body;
-        body.bemTriangleTarget = 300;
-        const btBoxShape box(btVector3(btScalar(0.1), btScalar(0.025), btScalar(0.1)));
-        btFractureRigidBody a(Material::glass(), box, body), b(Material::glass(), box, body);
-        BodyContact contact;
-        contact.point = Eigen::Vector3d(0.02, 0.025, 0.01);
-        contact.direction = -Eigen::Vector3d::UnitY();
-        contact.duration = 5e-5;
+        TwoSlabs slabs(budgetMB);
+        auto& [engine, a, b, contact] = slabs;
         Run r;
         std::vector<std::string> messages;
         setLogSink([&](LogLevel, const std::string& m) { messages.push_back(m); });
@@ -250,17 +269,8 @@ TEST(BemEngine, ReleasedMatricesAreRebuiltIdentically) {
 }
 
 TEST(BemEngine, BodiesInLastingContactKeepTheirMatrices) {
-    BemFractureEngineSettings settings;
-    settings.idleMatrixBudgetMB = 0.0;
-    BemFractureEngine engine(settings);
-    FractureBodySettings body;
-    body.bemTriangleTarget = 300;
-    const btBoxShape box(btVector3(btScalar(0.1), btScalar(0.025), btScalar(0.1)));
-    btFractureRigidBody a(Material::glass(), box, body), b(Material::glass(), box, body);
-    BodyContact contact;
-    contact.point = Eigen::Vector3d(0.02, 0.025, 0.01);
-    contact.direction = -Eigen::Vector3d::UnitY();
-    contact.duration = 5e-5;
+    TwoSlabs slabs(0.0);
+    auto& [engine, a, b, contact] = slabs;
     contact.impulse = 1e-3;
     int released = 0;
     setLogSink(
