@@ -22,6 +22,7 @@ set(BTFRACTURE_PUBLIC_HEADERS
   dynamics/FractureState.h
   dynamics/FragmentSleeping.h
   dynamics/RigidBodySnapshot.h
+  dynamics/SizeScaledBroadphase.h
   dynamics/btFractureDynamicsWorld.h
   dynamics/btFractureRigidBody.h
   geometry/ConvexPenetration.h

@@ -20,6 +20,7 @@
 #include <btFracture/dynamics/FractureBodySettings.h>
 #include <btFracture/dynamics/FractureEngine.h>
 #include <btFracture/dynamics/FractureListener.h>
+#include <btFracture/dynamics/SizeScaledBroadphase.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/geometry/LevelSetBody.h>

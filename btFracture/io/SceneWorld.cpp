@@ -8,6 +8,7 @@
 #include <btFracture/core/Primitives.h>
 #include <btFracture/dynamics/CollisionShapeBuilder.h>
 #include <btFracture/dynamics/FiniteState.h>
+#include <btFracture/dynamics/SizeScaledBroadphase.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/geometry/ClosestPointTree.h>
 #include <btFracture/io/CrackFaces.h>
@@ -250,7 +251,7 @@ SceneWorld::SceneWorld(const Scene& scene, const SceneWorldFactory& factory)
         return b.shape.type == SceneShapeType::Mesh && b.shape.collision == SceneMeshCollision::GImpact;
     });
     if (anyGImpact) btGImpactCollisionAlgorithm::registerAlgorithm(w.dispatcher.get());
-    w.broadphase = std::make_unique<btDbvtBroadphase>();
+    w.broadphase = std::make_unique<SizeScaledBroadphase>();
     w.solver = std::make_unique<btSequentialImpulseConstraintSolver>();
     w.world = factory.createWorld(*w.dispatcher, *w.broadphase, *w.solver, *w.configuration, scene);
     if (!w.world) throw Error(scene.file + ": the scene factory created no world");
