@@ -18,12 +18,20 @@
 // the bodies at the end and the per-phase times.
 //
 // Usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] [--sleeping]
+//                              [--bullet-leaves-until STEP] [--no-profile]
 //   --hull-vertices N  collision hull corner budget of the scene's breakable bodies and their
 //                      fragments (0: every corner; default: CollisionShapeOptions)
 //   --sleeping         fragment sleeping on (btFractureDynamicsWorld::setFragmentSleeping; off by
 //                      default: fragments keep their parent's thresholds, Bullet's 2 s rule)
+//   --bullet-leaves-until STEP
+//                      broadphase leaves widened by Bullet's 5 cm before STEP, by the scene
+//                      world's SizeScaledBroadphase fraction from STEP on: both leaves from one
+//                      state (a STEP past the end: Bullet's leaves throughout)
+//   --no-profile       no zone hooks and no timed near callback: the rigid time as the runner
+//                      counts it, without the profile's own cost; prints the first four METRICs
 #include <btFracture/core/ThreadLimit.h>
 #include <btFracture/core/Timer.h>
+#include <btFracture/dynamics/SizeScaledBroadphase.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/io/FractureRecorder.h>
@@ -47,6 +55,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -117,8 +126,8 @@ double zone(const char* name) {
 
 int main(int argc, char** argv) {
     std::string file = std::string(BTFRACTURE_MESH_DIR) + "/../scenes/column_bunny.json";
-    bool defaultScene = true, sleeping = false;
-    int steps = -1, hullVertices = -1;
+    bool defaultScene = true, sleeping = false, profile = true;
+    int steps = -1, hullVertices = -1, bulletLeavesUntil = 0;
     for (int i = 1; i < argc; ++i) {
         const bool hasValue = i + 1 < argc;
         if (!std::strcmp(argv[i], "--steps") && hasValue) {
@@ -127,13 +136,17 @@ int main(int argc, char** argv) {
             hullVertices = std::atoi(argv[++i]);
         } else if (!std::strcmp(argv[i], "--sleeping")) {
             sleeping = true;
+        } else if (!std::strcmp(argv[i], "--bullet-leaves-until") && hasValue) {
+            bulletLeavesUntil = std::atoi(argv[++i]);
+        } else if (!std::strcmp(argv[i], "--no-profile")) {
+            profile = false;
         } else if (argv[i][0] != '-') {
             file = argv[i];
             defaultScene = false;
         } else {
             std::fprintf(stderr,
                          "usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] "
-                         "[--sleeping]\n");
+                         "[--sleeping] [--bullet-leaves-until STEP] [--no-profile]\n");
             return 2;
         }
     }
@@ -144,10 +157,13 @@ int main(int argc, char** argv) {
     SceneWorld world(scene, factory);
     auto* fractureWorld = dynamic_cast<btFractureDynamicsWorld*>(&world.world());
     auto* dispatcher = dynamic_cast<btCollisionDispatcher*>(world.world().getDispatcher());
-    if (!fractureWorld || !dispatcher) {
+    auto* broadphase = dynamic_cast<SizeScaledBroadphase*>(world.world().getBroadphase());
+    if (!fractureWorld || !dispatcher || !broadphase) {
         std::fprintf(stderr, "bench_rigid_fragments: %s has no breakable body\n", file.c_str());
         return 2;
     }
+    const btScalar scaledFraction = broadphase->fraction();
+    if (bulletLeavesUntil > 0) broadphase->setFraction(std::numeric_limits<btScalar>::infinity());
     if (sleeping) fractureWorld->setFragmentSleeping(true);
     FractureRecorder recorder;
     FractureRecorderListener names(recorder, scene.world.dt / scene.world.substeps);
@@ -162,17 +178,25 @@ int main(int argc, char** argv) {
         }
     SceneFractureListener sceneListener(names, world);
     fractureWorld->addFractureListener(&sceneListener);
-    dispatcher->setNearCallback(timedNearCallback);
     btEnterProfileZoneFunc* const previousEnter = btGetCurrentEnterProfileZoneFunc();
     btLeaveProfileZoneFunc* const previousLeave = btGetCurrentLeaveProfileZoneFunc();
-    btSetCustomEnterProfileZoneFunc(enterZone);
-    btSetCustomLeaveProfileZoneFunc(leaveZone);
+    if (profile) {
+        dispatcher->setNearCallback(timedNearCallback);
+        btSetCustomEnterProfileZoneFunc(enterZone);
+        btSetCustomLeaveProfileZoneFunc(leaveZone);
+    }
 
-    double stepSeconds = 0.0;
+    double stepSeconds = 0.0, rigidAfterSwitch = 0.0;
     for (int s = 0; s < scene.world.steps; ++s) {
+        if (s == bulletLeavesUntil) broadphase->setFraction(scaledFraction);
+        const double fractureBefore = fractureWorld->fractureStatistics().fractureSeconds();
         Timer timer;
         world.stepFrame();
-        stepSeconds += timer.seconds();
+        const double seconds = timer.seconds();
+        stepSeconds += seconds;
+        if (s >= bulletLeavesUntil)
+            rigidAfterSwitch +=
+                seconds - (fractureWorld->fractureStatistics().fractureSeconds() - fractureBefore);
     }
     btSetCustomEnterProfileZoneFunc(previousEnter);
     btSetCustomLeaveProfileZoneFunc(previousLeave);
@@ -205,6 +229,10 @@ int main(int argc, char** argv) {
     std::printf("METRIC rigid_share_of_wall_%s %.3f fraction\n", tag.c_str(), rigid / stepSeconds);
     std::printf("METRIC fracture_ms_per_step_%s %.3f ms\n", tag.c_str(), fracture * perStep);
     std::printf("METRIC bodies_at_end_%s %zu bodies\n", tag.c_str(), world.bodies().size());
+    if (bulletLeavesUntil > 0 && bulletLeavesUntil < scene.world.steps)
+        std::printf("rigid from step %d on (scaled leaves): %.3f ms per step\n", bulletLeavesUntil,
+                    1e3 * rigidAfterSwitch / (scene.world.steps - bulletLeavesUntil));
+    if (!profile) return 0;
     // Bullet's step, by zone (inclusive times; CCD sweeps run inside integrateTransforms).
     const double broad = zone("updateAabbs") + zone("calculateOverlappingPairs");
     const double narrow = zone("dispatchAllCollisionPairs");

@@ -8,9 +8,13 @@
 namespace btfracture {
 
 SizeScaledBroadphase::SizeScaledBroadphase(btScalar fraction, btOverlappingPairCache* pairCache)
-    : btDbvtBroadphase(pairCache), fraction_(fraction) {
-    if (!(fraction > 0))
-        throw std::invalid_argument("SizeScaledBroadphase: the margin fraction must be > 0");
+    : btDbvtBroadphase(pairCache) {
+    setFraction(fraction);
+}
+
+void SizeScaledBroadphase::setFraction(btScalar fraction) {
+    if (!(fraction > 0)) throw std::invalid_argument("SizeScaledBroadphase: the margin fraction must be > 0");
+    fraction_ = fraction;
 }
 
 void SizeScaledBroadphase::setAabb(btBroadphaseProxy* absproxy, const btVector3& aabbMin,
@@ -21,7 +25,7 @@ void SizeScaledBroadphase::setAabb(btBroadphaseProxy* absproxy, const btVector3&
     const bool fixedSet = proxy->stage == STAGECOUNT;
     // Bullet's own update when its margin applies, when the leaf still holds the box (nothing
     // moves in the tree) and for a body leaving the fixed set (inserted without a margin).
-    if (margin >= gDbvtMargin || fixedSet ||
+    if (!(margin < gDbvtMargin) || fixedSet ||
         proxy->leaf->volume.Contain(btDbvtVolume::FromMM(aabbMin, aabbMax))) {
         btDbvtBroadphase::setAabb(absproxy, aabbMin, aabbMax, dispatcher);
         return;

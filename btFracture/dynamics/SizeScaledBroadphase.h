@@ -15,16 +15,20 @@ namespace btfracture {
 
 class SizeScaledBroadphase : public btDbvtBroadphase {
 public:
-    // `fraction` > 0 of the body's largest box edge; throws std::invalid_argument otherwise.
-    explicit SizeScaledBroadphase(btScalar fraction = btScalar(0.25), btOverlappingPairCache* pairCache = nullptr);
+    // `fraction` > 0 of the body's largest box edge (infinity: Bullet's own leaves, bit for bit);
+    // throws std::invalid_argument otherwise.
+    explicit SizeScaledBroadphase(btScalar fraction = btScalar(0.25),
+                                  btOverlappingPairCache* pairCache = nullptr);
 
     void setAabb(btBroadphaseProxy* proxy, const btVector3& aabbMin, const btVector3& aabbMax,
                  btDispatcher* dispatcher) override;
 
     btScalar fraction() const { return fraction_; }
+    // For the leaves widened from now on; throws as the constructor does.
+    void setFraction(btScalar fraction);
 
 private:
-    btScalar fraction_;
+    btScalar fraction_ = btScalar(0.25);
 };
 
 }  // namespace btfracture

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <memory>
 #include <random>
 #include <stdexcept>
@@ -45,8 +46,8 @@ struct Drift {
             for (int j = 0; j < n; ++j)
                 for (int k = 0; k < n; ++k) {
                     btTransform pose(btQuaternion::getIdentity(), btVector3(i, j, k) * spacing);
-                    auto body = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(
-                        1, nullptr, &cube, inertia));
+                    auto body = std::make_unique<btRigidBody>(
+                        btRigidBody::btRigidBodyConstructionInfo(1, nullptr, &cube, inertia));
                     body->setWorldTransform(pose);
                     body->setLinearVelocity(btVector3(unit(random), unit(random), unit(random)) * speed);
                     body->setAngularFactor(0);  // boxes of constant size
@@ -100,7 +101,8 @@ TEST(SizeScaledBroadphase, LeavesHoldTheBoxAndNoOverlappingPairIsLost) {
         for (const auto& body : drift.bodies) {
             btVector3 boxMin, boxMax;
             body->getCollisionShape()->getAabb(body->getWorldTransform(), boxMin, boxMax);
-            const btVector3 threshold(gContactBreakingThreshold, gContactBreakingThreshold, gContactBreakingThreshold);
+            const btVector3 threshold(gContactBreakingThreshold, gContactBreakingThreshold,
+                                      gContactBreakingThreshold);
             const btBroadphaseProxy& proxy = *body->getBroadphaseHandle();
             ASSERT_LT((proxy.m_aabbMin - (boxMin - threshold)).length(), tolerance) << "step " << s;
             ASSERT_LT((proxy.m_aabbMax - (boxMax + threshold)).length(), tolerance) << "step " << s;
@@ -111,7 +113,8 @@ TEST(SizeScaledBroadphase, LeavesHoldTheBoxAndNoOverlappingPairIsLost) {
                 // motion, at most 4 mm) widened by 0.25 of the chip and motion on each side.
                 const btScalar motion = btScalar(0.004);
                 ASSERT_LE(leafMax(*body)[k] - leafMin(*body)[k],
-                          edge + 2 * gContactBreakingThreshold + motion + 2 * btScalar(0.25) * (edge + motion) + tolerance)
+                          edge + 2 * gContactBreakingThreshold + motion +
+                              2 * btScalar(0.25) * (edge + motion) + tolerance)
                     << "step " << s;
             }
         }
@@ -136,14 +139,45 @@ TEST(SizeScaledBroadphase, MetreSizedBodiesKeepBulletsLeaves) {
         bullet.step();
         scaled.step();
         for (std::size_t i = 0; i < bullet.bodies.size(); ++i) {
-            ASSERT_EQ(leafMin(*bullet.bodies[i]), leafMin(*scaled.bodies[i])) << "body " << i << " at step " << s;
-            ASSERT_EQ(leafMax(*bullet.bodies[i]), leafMax(*scaled.bodies[i])) << "body " << i << " at step " << s;
+            ASSERT_EQ(leafMin(*bullet.bodies[i]), leafMin(*scaled.bodies[i]))
+                << "body " << i << " at step " << s;
+            ASSERT_EQ(leafMax(*bullet.bodies[i]), leafMax(*scaled.bodies[i]))
+                << "body " << i << " at step " << s;
         }
     }
     // The leaves were updated with the margin: wider than the boxes.
     const btRigidBody& body = *scaled.bodies.front();
-    EXPECT_GT(leafMax(body).x() - leafMin(body).x(),
-              body.getBroadphaseHandle()->m_aabbMax.x() - body.getBroadphaseHandle()->m_aabbMin.x() + gDbvtMargin);
+    EXPECT_GT(
+        leafMax(body).x() - leafMin(body).x(),
+        body.getBroadphaseHandle()->m_aabbMax.x() - body.getBroadphaseHandle()->m_aabbMin.x() + gDbvtMargin);
+}
+
+TEST(SizeScaledBroadphase, InfiniteFractionKeepsBulletsLeavesThenScales) {
+    // Chips with an infinite fraction: Bullet's leaves, bit for bit; a finite one set later
+    // narrows the leaves widened from then on (at up to 3 m/s every chip leaves its 5 cm leaf
+    // within the 30 steps after).
+    Drift bullet(std::make_unique<btDbvtBroadphase>(), 3, btScalar(0.01), btScalar(0.03), 3);
+    auto owned = std::make_unique<SizeScaledBroadphase>(std::numeric_limits<btScalar>::infinity());
+    SizeScaledBroadphase& broadphase = *owned;
+    Drift scaled(std::move(owned), 3, btScalar(0.01), btScalar(0.03), 3);
+    for (int s = 0; s < 30; ++s) {
+        bullet.step();
+        scaled.step();
+        for (std::size_t i = 0; i < bullet.bodies.size(); ++i) {
+            ASSERT_EQ(leafMin(*bullet.bodies[i]), leafMin(*scaled.bodies[i]))
+                << "body " << i << " at step " << s;
+            ASSERT_EQ(leafMax(*bullet.bodies[i]), leafMax(*scaled.bodies[i]))
+                << "body " << i << " at step " << s;
+        }
+    }
+    broadphase.setFraction(btScalar(0.25));
+    for (int s = 0; s < 30; ++s) scaled.step();
+    for (const auto& body : scaled.bodies) {
+        const btBroadphaseProxy& proxy = *body->getBroadphaseHandle();
+        EXPECT_LT(leafMax(*body).x() - leafMin(*body).x(),
+                  proxy.m_aabbMax.x() - proxy.m_aabbMin.x() + gDbvtMargin);
+    }
+    EXPECT_THROW(broadphase.setFraction(0), std::invalid_argument);
 }
 
 TEST(SizeScaledBroadphase, AHeapOfChipsMakesFewerPairs) {
