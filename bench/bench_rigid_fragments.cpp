@@ -18,7 +18,7 @@
 // the bodies at the end and the per-phase times.
 //
 // Usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] [--sleeping]
-//                              [--bullet-leaves-until STEP] [--no-profile]
+//                              [--bullet-leaves-until STEP [--fraction F]] [--no-profile]
 //   --hull-vertices N  collision hull corner budget of the scene's breakable bodies and their
 //                      fragments (0: every corner; default: CollisionShapeOptions)
 //   --sleeping         fragment sleeping on (btFractureDynamicsWorld::setFragmentSleeping; off by
@@ -27,6 +27,8 @@
 //                      broadphase leaves widened by Bullet's 5 cm before STEP, by the scene
 //                      world's SizeScaledBroadphase fraction from STEP on: both leaves from one
 //                      state (a STEP past the end: Bullet's leaves throughout)
+//   --fraction F       the scaled leaves' fraction of the body's size (default: the scene
+//                      world's; inf: Bullet's leaves after STEP too, for the time from STEP on)
 //   --no-profile       no zone hooks and no timed near callback: the rigid time as the runner
 //                      counts it, without the profile's own cost; prints the first four METRICs
 #include <btFracture/core/ThreadLimit.h>
@@ -128,6 +130,7 @@ int main(int argc, char** argv) {
     std::string file = std::string(BTFRACTURE_MESH_DIR) + "/../scenes/column_bunny.json";
     bool defaultScene = true, sleeping = false, profile = true;
     int steps = -1, hullVertices = -1, bulletLeavesUntil = 0;
+    double fraction = 0.0;  // 0: the scene world's
     for (int i = 1; i < argc; ++i) {
         const bool hasValue = i + 1 < argc;
         if (!std::strcmp(argv[i], "--steps") && hasValue) {
@@ -138,6 +141,12 @@ int main(int argc, char** argv) {
             sleeping = true;
         } else if (!std::strcmp(argv[i], "--bullet-leaves-until") && hasValue) {
             bulletLeavesUntil = std::atoi(argv[++i]);
+        } else if (!std::strcmp(argv[i], "--fraction") && hasValue) {
+            fraction = std::strtod(argv[++i], nullptr);
+            if (!(fraction > 0.0)) {
+                std::fprintf(stderr, "bench_rigid_fragments: --fraction must be > 0, got %s\n", argv[i]);
+                return 2;
+            }
         } else if (!std::strcmp(argv[i], "--no-profile")) {
             profile = false;
         } else if (argv[i][0] != '-') {
@@ -146,7 +155,7 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(stderr,
                          "usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] "
-                         "[--sleeping] [--bullet-leaves-until STEP] [--no-profile]\n");
+                         "[--sleeping] [--bullet-leaves-until STEP [--fraction F]] [--no-profile]\n");
             return 2;
         }
     }
@@ -162,7 +171,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_rigid_fragments: %s has no breakable body\n", file.c_str());
         return 2;
     }
-    const btScalar scaledFraction = broadphase->fraction();
+    const btScalar scaledFraction = fraction > 0.0 ? btScalar(fraction) : broadphase->fraction();
     if (bulletLeavesUntil > 0) broadphase->setFraction(std::numeric_limits<btScalar>::infinity());
     if (sleeping) fractureWorld->setFragmentSleeping(true);
     FractureRecorder recorder;
@@ -221,18 +230,19 @@ int main(int argc, char** argv) {
     // A hull's corners are what every support query of GJK and of the CCD sweeps loops over.
     std::printf("convex hull bodies at the end %d, %.1f corners on average, %d at most\n", hulls,
                 hulls > 0 ? double(corners) / hulls : 0.0, maxCorners);
-    std::printf("engine calls %llu (%llu without fragments), Bullet's own steps %.3f ms per step\n",
-                static_cast<unsigned long long>(stats.engineCalls),
-                static_cast<unsigned long long>(stats.engineCalls - stats.fractureEvents),
-                zone("internalSingleStepSimulation") * perStep);
     std::printf("METRIC rigid_ms_per_step_%s %.3f ms\n", tag.c_str(), rigid * perStep);
     std::printf("METRIC rigid_share_of_wall_%s %.3f fraction\n", tag.c_str(), rigid / stepSeconds);
     std::printf("METRIC fracture_ms_per_step_%s %.3f ms\n", tag.c_str(), fracture * perStep);
     std::printf("METRIC bodies_at_end_%s %zu bodies\n", tag.c_str(), world.bodies().size());
     if (bulletLeavesUntil > 0 && bulletLeavesUntil < scene.world.steps)
-        std::printf("rigid from step %d on (scaled leaves): %.3f ms per step\n", bulletLeavesUntil,
+        std::printf("rigid from step %d on (leaves widened by %g of the body): %.3f ms per step\n",
+                    bulletLeavesUntil, double(scaledFraction),
                     1e3 * rigidAfterSwitch / (scene.world.steps - bulletLeavesUntil));
     if (!profile) return 0;
+    std::printf("engine calls %llu (%llu without fragments), Bullet's own steps %.3f ms per step\n",
+                static_cast<unsigned long long>(stats.engineCalls),
+                static_cast<unsigned long long>(stats.engineCalls - stats.fractureEvents),
+                zone("internalSingleStepSimulation") * perStep);
     // Bullet's step, by zone (inclusive times; CCD sweeps run inside integrateTransforms).
     const double broad = zone("updateAabbs") + zone("calculateOverlappingPairs");
     const double narrow = zone("dispatchAllCollisionPairs");
