@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Zlib
 // Where the rigid-body time of a fracture-heavy scene goes. Replays a scene (default: the demo,
-// column_bunny, which ends with about 400 bodies) exactly as btfracture-run does (SceneWorld with
-// FractureSceneWorldFactory, the scene and recorder listeners, no outputs) and splits each step:
+// column_bunny, whose bunny shatters into hundreds of fragments in some of its courses) exactly
+// as btfracture-run does (SceneWorld with FractureSceneWorldFactory, the scene and recorder
+// listeners, no outputs) and splits each step:
 //  - fracture: the engine and the swap (FractureRecorder, the runner's "fracture time");
 //  - rigid: the rest of the step (the runner's "rigid-body time"), itself split by Bullet's own
 //    profile zones (btSetCustomEnterProfileZoneFunc): broadphase (calculateOverlappingPairs),
