@@ -28,6 +28,7 @@ std::unique_ptr<btDiscreteDynamicsWorld> FractureSceneWorldFactory::createWorld(
     BemFractureEngineSettings settings = engine_;
     settings.voxelFronts = scene.effects.voxelFronts;
     settings.idleMatrixBudgetMB = scene.effects.idleMatrixBudgetMB;
+    settings.fracture.surfaceSeeds = scene.effects.surfaceSeeds;
     auto engine = std::make_unique<BemFractureEngine>(settings);
     if (cutObserver_) engine->setCutObserver(cutObserver_);
     world->setFractureEngine(std::move(engine));

@@ -254,7 +254,8 @@ private:
     // effects: output formats, the run seed and the per-body fracture settings (after the bodies).
     void effects(const Json& value, const std::string& path, Scene& scene) const {
         requireObject(value, path, "an object");
-        allowOnly(value, path, {"outputs", "seed", "crack_cut", "idle_matrix_budget_mb", "fracture"});
+        allowOnly(value, path,
+                  {"outputs", "seed", "crack_cut", "idle_matrix_budget_mb", "surface_seeds", "fracture"});
         if (value.contains("outputs")) {
             const Json& list = value["outputs"];
             const std::string lpath = child(path, "outputs");
@@ -283,6 +284,8 @@ private:
             scene.effects.idleMatrixBudgetMB =
                 nonNegative(value["idle_matrix_budget_mb"], child(path, "idle_matrix_budget_mb"),
                             "a number of megabytes >= 0");
+        if (value.contains("surface_seeds"))
+            scene.effects.surfaceSeeds = boolean(value["surface_seeds"], child(path, "surface_seeds"));
         if (value.contains("fracture")) {
             const Json& fracture = value["fracture"];
             const std::string fpath = child(path, "fracture");

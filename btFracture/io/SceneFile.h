@@ -123,6 +123,8 @@ struct SceneEffects {
     bool voxelFronts = true;
     // BEM and crack matrices idle bodies may keep [MB] (BemFractureEngineSettings::idleMatrixBudgetMB).
     double idleMatrixBudgetMB = BemFractureEngineSettings().idleMatrixBudgetMB;
+    // FULL seeds surface-breaking cracks (CrackSettings::surfaceSeeds).
+    bool surfaceSeeds = BemFractureEngineSettings().fracture.surfaceSeeds;
 };
 
 // Settings of one run that do not belong to the scene file (command line).

@@ -90,7 +90,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
                   "image": {"width": 320, "height": 200, "projection": "orthographic", "shading": "flat",
                             "view": [0, 1, 0]}},
       "effects": {"outputs": ["png", "csv", "obj"], "seed": 42, "crack_cut": "coarse_sheet",
-                  "idle_matrix_budget_mb": 64,
+                  "idle_matrix_budget_mb": 64, "surface_seeds": true,
                   "fracture": {"pane": {"method": "hybrid", "hybrid_threshold": 3000, "energy_bound": false, "refracture_depth": 2,
                                         "impulse_threshold": 0.5,
                                         "material_noise": {"amplitude": 0.2, "seed": 7}},
@@ -125,6 +125,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_FALSE(s.effects.outputs.vdb || s.effects.outputs.motion || s.effects.outputs.gltf);
     EXPECT_EQ(s.effects.seed, 42u);
     EXPECT_DOUBLE_EQ(s.effects.idleMatrixBudgetMB, 64.0);
+    EXPECT_TRUE(s.effects.surfaceSeeds);
     EXPECT_FALSE(s.effects.voxelFronts);
     EXPECT_EQ(s.outputs.pngEveryNSteps, 5);
     EXPECT_EQ(s.outputs.image.width, 320);
@@ -184,7 +185,9 @@ TEST(SceneFile, BadEffectsNameTheirPath) {
          "test.json: effects.fracture.ball.impulse_threshold: expected a positive number [N s], got 0"},
         {R"("effects": {"fractures": {}})",
          "test.json: effects.fractures: unknown key (expected one of: outputs, seed, crack_cut, "
-         "idle_matrix_budget_mb, fracture)"},
+         "idle_matrix_budget_mb, surface_seeds, fracture)"},
+        {R"("effects": {"surface_seeds": "yes"})",
+         "test.json: effects.surface_seeds: expected true or false, got \"yes\""},
         {R"("effects": {"idle_matrix_budget_mb": -5})",
          "test.json: effects.idle_matrix_budget_mb: expected a number of megabytes >= 0, got -5"},
         {R"("outputs": {"image": {"width": 8}})",

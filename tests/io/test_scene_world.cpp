@@ -2,6 +2,9 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
+#include <btFracture/dynamics/BemFractureEngine.h>
+#include <btFracture/dynamics/btFractureDynamicsWorld.h>
+#include <btFracture/io/FractureSceneWorldFactory.h>
 #include <btFracture/io/MeshReader.h>
 #include <btFracture/io/SceneFile.h>
 #include <btFracture/io/SceneWorld.h>
@@ -244,4 +247,30 @@ TEST(SceneWorld, KinematicSleepingFrictionRestitution) {
     EXPECT_GT(position(crate).x(), 0.5);
     EXPECT_NEAR(position(lamp).y(), 3.0, 1e-12);
     EXPECT_EQ(lamp.getActivationState(), ISLAND_SLEEPING);
+}
+
+// The scene's engine-wide effects reach the fracture engine the factory makes.
+TEST(SceneWorld, FractureFactoryPassesTheEngineEffects) {
+    const auto engineOf = [](SceneWorld& world) {
+        const auto* fractureWorld = dynamic_cast<const btFractureDynamicsWorld*>(&world.world());
+        return fractureWorld ? dynamic_cast<const BemFractureEngine*>(fractureWorld->fractureEngine())
+                             : nullptr;
+    };
+    const std::string bodies = R"("bodies": [{"name": "ground", "shape": {"type": "plane"}},
+        {"name": "slab", "shape": {"type": "box", "half_extents": [0.1, 0.02, 0.1]}, "position": [0, 0.02, 0],
+         "material": "glass"}])";
+    const FractureSceneWorldFactory factory(0);
+    SceneWorld plain(sceneOf("{" + bodies + R"(, "effects": {"fracture": {"slab": true}}})"), factory);
+    SceneWorld set(sceneOf("{" + bodies +
+                           R"(, "effects": {"surface_seeds": true, "idle_matrix_budget_mb": 0,
+                                                  "crack_cut": "coarse_sheet", "fracture": {"slab": true}}})"),
+                   factory);
+    ASSERT_NE(engineOf(plain), nullptr);
+    ASSERT_NE(engineOf(set), nullptr);
+    const BemFractureEngineSettings defaults;
+    EXPECT_EQ(engineOf(plain)->settings().fracture.surfaceSeeds, defaults.fracture.surfaceSeeds);
+    EXPECT_EQ(engineOf(plain)->settings().idleMatrixBudgetMB, defaults.idleMatrixBudgetMB);
+    EXPECT_TRUE(engineOf(set)->settings().fracture.surfaceSeeds);
+    EXPECT_EQ(engineOf(set)->settings().idleMatrixBudgetMB, 0.0);
+    EXPECT_FALSE(engineOf(set)->settings().voxelFronts);
 }
