@@ -77,6 +77,20 @@ bool boxesOverlap(const btBroadphaseProxy& a, const btBroadphaseProxy& b) {
     return true;
 }
 
+// Steps both drifts and asserts every leaf of `scaled` to be that of `bullet`, bit for bit.
+void assertBulletsLeaves(Drift& bullet, Drift& scaled, int steps) {
+    for (int s = 0; s < steps; ++s) {
+        bullet.step();
+        scaled.step();
+        for (std::size_t i = 0; i < bullet.bodies.size(); ++i) {
+            ASSERT_EQ(leafMin(*bullet.bodies[i]), leafMin(*scaled.bodies[i]))
+                << "body " << i << " at step " << s;
+            ASSERT_EQ(leafMax(*bullet.bodies[i]), leafMax(*scaled.bodies[i]))
+                << "body " << i << " at step " << s;
+        }
+    }
+}
+
 long long pairsOver(Drift& drift, int steps) {
     long long pairs = 0;
     for (int s = 0; s < steps; ++s) {
@@ -135,16 +149,7 @@ TEST(SizeScaledBroadphase, MetreSizedBodiesKeepBulletsLeaves) {
     // 0.4 m cubes: 0.25 of their size exceeds gDbvtMargin, so the leaves are Bullet's, bit for bit.
     Drift bullet(std::make_unique<btDbvtBroadphase>(), 3, btScalar(0.4), 1, 5);
     Drift scaled(std::make_unique<SizeScaledBroadphase>(btScalar(0.25)), 3, btScalar(0.4), 1, 5);
-    for (int s = 0; s < 50; ++s) {
-        bullet.step();
-        scaled.step();
-        for (std::size_t i = 0; i < bullet.bodies.size(); ++i) {
-            ASSERT_EQ(leafMin(*bullet.bodies[i]), leafMin(*scaled.bodies[i]))
-                << "body " << i << " at step " << s;
-            ASSERT_EQ(leafMax(*bullet.bodies[i]), leafMax(*scaled.bodies[i]))
-                << "body " << i << " at step " << s;
-        }
-    }
+    ASSERT_NO_FATAL_FAILURE(assertBulletsLeaves(bullet, scaled, 50));
     // The leaves were updated with the margin: wider than the boxes.
     const btRigidBody& body = *scaled.bodies.front();
     EXPECT_GT(
@@ -160,16 +165,7 @@ TEST(SizeScaledBroadphase, InfiniteFractionKeepsBulletsLeavesThenScales) {
     auto owned = std::make_unique<SizeScaledBroadphase>(std::numeric_limits<btScalar>::infinity());
     SizeScaledBroadphase& broadphase = *owned;
     Drift scaled(std::move(owned), 3, btScalar(0.01), btScalar(0.03), 3);
-    for (int s = 0; s < 30; ++s) {
-        bullet.step();
-        scaled.step();
-        for (std::size_t i = 0; i < bullet.bodies.size(); ++i) {
-            ASSERT_EQ(leafMin(*bullet.bodies[i]), leafMin(*scaled.bodies[i]))
-                << "body " << i << " at step " << s;
-            ASSERT_EQ(leafMax(*bullet.bodies[i]), leafMax(*scaled.bodies[i]))
-                << "body " << i << " at step " << s;
-        }
-    }
+    ASSERT_NO_FATAL_FAILURE(assertBulletsLeaves(bullet, scaled, 30));
     broadphase.setFraction(btScalar(0.25));
     for (int s = 0; s < 30; ++s) scaled.step();
     for (const auto& body : scaled.bodies) {
