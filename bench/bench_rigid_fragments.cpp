@@ -167,10 +167,15 @@ int main(int argc, char** argv) {
     SceneWorld world(scene, factory);
     auto* fractureWorld = dynamic_cast<btFractureDynamicsWorld*>(&world.world());
     auto* dispatcher = dynamic_cast<btCollisionDispatcher*>(world.world().getDispatcher());
-    auto* broadphase = dynamic_cast<SizeScaledBroadphase*>(world.world().getBroadphase());
-    if (!fractureWorld || !dispatcher || !broadphase) {
+    if (!fractureWorld || !dispatcher) {
         std::fprintf(stderr, "bench_rigid_fragments: %s has no breakable body\n", file.c_str());
         return 2;
+    }
+    auto* broadphase = dynamic_cast<SizeScaledBroadphase*>(world.world().getBroadphase());
+    if (!broadphase) {
+        std::fprintf(stderr,
+                     "bench_rigid_fragments: the scene world's broadphase is not a SizeScaledBroadphase\n");
+        return 1;
     }
     const btScalar scaledFraction = fraction > 0.0 ? btScalar(fraction) : broadphase->fraction();
     if (bulletLeavesUntil > 0) broadphase->setFraction(std::numeric_limits<btScalar>::infinity());
