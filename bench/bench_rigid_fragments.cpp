@@ -20,6 +20,7 @@
 //
 // Usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] [--sleeping]
 //                              [--bullet-leaves-until STEP [--fraction F]] [--no-profile]
+//                              [--trapped-every N]
 //   --hull-vertices N  collision hull corner budget of the scene's breakable bodies and their
 //                      fragments (0: every corner; default: CollisionShapeOptions)
 //   --sleeping         fragment sleeping on (btFractureDynamicsWorld::setFragmentSleeping; off by
@@ -32,6 +33,13 @@
 //                      world's; inf: Bullet's leaves after STEP too, for the time from STEP on)
 //   --no-profile       no zone hooks and no timed near callback: the rigid time as the runner
 //                      counts it, without the profile's own cost; prints the first four METRICs
+//   --trapped-every N  every N-th step, sorts the convex - GImpact pairs by whether the convex
+//                      body's centre lies inside the mesh body (winding number of its mesh > 1/2)
+//                      and counts those wholly inside (centre deeper than its bounding radius):
+//                      chips caught in a hollow mesh fragment, and their share of that pair
+//                      type's narrowphase time (costs O(triangles) per pair; profile only)
+#include <btFracture/core/ClosestPoint.h>
+#include <btFracture/core/Intersection.h>
 #include <btFracture/core/ThreadLimit.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/SizeScaledBroadphase.h>
@@ -98,6 +106,41 @@ struct PairTime {
 };
 std::map<std::pair<int, int>, PairTime> pairTimes;
 
+// Convex - GImpact pairs of the sampled steps (--trapped-every) by where the convex body's centre
+// lies: inside the mesh body (and of those, deeper than the convex's bounding radius) or outside.
+struct TrappedCount {
+    int every = 0, step = 0;
+    long inside = 0, wholly = 0, outside = 0;
+    double insideSeconds = 0.0, outsideSeconds = 0.0;
+};
+TrappedCount trapped;
+
+void countTrapped(const btCollisionObject* convex, const btCollisionObject* mesh, double seconds) {
+    const btFractureRigidBody* body = btFractureRigidBody::upcast(mesh);
+    if (!body) return;
+    const btVector3 c = mesh->getWorldTransform().inverse() * convex->getWorldTransform().getOrigin();
+    const Eigen::Vector3d centre(c.x(), c.y(), c.z());
+    const TriangleMesh& m = body->mesh();
+    if (windingNumber(m.vertices, m.triangles, centre) <= 0.5) {
+        ++trapped.outside;
+        trapped.outsideSeconds += seconds;
+        return;
+    }
+    ++trapped.inside;
+    trapped.insideSeconds += seconds;
+    double depth = INFINITY;
+    for (const auto& t : m.triangles)
+        depth = std::min(
+            depth,
+            (closestPointAndFeature(centre, m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]).point -
+             centre)
+                .norm());
+    btVector3 sphereCentre;
+    btScalar radius;
+    convex->getCollisionShape()->getBoundingSphere(sphereCentre, radius);
+    if (depth > radius) ++trapped.wholly;
+}
+
 void timedNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
                        const btDispatcherInfo& info) {
     const auto start = Clock::now();
@@ -118,6 +161,13 @@ void timedNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher
     int points = 0;
     for (int i = 0; i < manifolds.size(); ++i) points += manifolds[i]->getNumContacts();
     if (points == 0) ++entry.apart;
+    if (trapped.every > 0 && trapped.step % trapped.every == 0 && pair.m_algorithm &&
+        b->getShapeType() == GIMPACT_SHAPE_PROXYTYPE && a->isConvex()) {
+        const auto* first = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+        const auto* second = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+        if (first->getCollisionShape() != a) std::swap(first, second);
+        countTrapped(first, second, seconds);
+    }
 }
 
 double zone(const char* name) {
@@ -148,6 +198,12 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "bench_rigid_fragments: --fraction must be > 0, got %s\n", argv[i]);
                 return 2;
             }
+        } else if (!std::strcmp(argv[i], "--trapped-every") && hasValue) {
+            trapped.every = std::atoi(argv[++i]);
+            if (trapped.every <= 0) {
+                std::fprintf(stderr, "bench_rigid_fragments: --trapped-every must be > 0, got %s\n", argv[i]);
+                return 2;
+            }
         } else if (!std::strcmp(argv[i], "--no-profile")) {
             profile = false;
         } else if (argv[i][0] != '-') {
@@ -156,9 +212,16 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(stderr,
                          "usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] "
-                         "[--sleeping] [--bullet-leaves-until STEP [--fraction F]] [--no-profile]\n");
+                         "[--sleeping] [--bullet-leaves-until STEP [--fraction F]] [--no-profile] "
+                         "[--trapped-every N]\n");
             return 2;
         }
+    }
+    if (trapped.every > 0 && !profile) {
+        std::fprintf(stderr,
+                     "bench_rigid_fragments: --trapped-every counts in the timed near callback, "
+                     "which --no-profile turns off\n");
+        return 2;
     }
     Scene scene = readSceneFile(file);
     if (steps > 0) scene.world.steps = steps;
@@ -207,6 +270,7 @@ int main(int argc, char** argv) {
         const double fractureBefore = fractureWorld->fractureStatistics().fractureSeconds();
         Timer timer;
         world.stepFrame();
+        ++trapped.step;
         const double seconds = timer.seconds();
         stepSeconds += seconds;
         if (s >= bulletLeavesUntil)
@@ -273,6 +337,17 @@ int main(int argc, char** argv) {
             entry.name.c_str(), entry.seconds * perStep, double(entry.pairs) / scene.world.steps,
             double(entry.apart) / scene.world.steps,
             entry.pairs > 0 ? 1e6 * entry.seconds / double(entry.pairs) : 0.0);
+    if (trapped.every > 0) {
+        const long pairs = trapped.inside + trapped.outside;
+        const double total = trapped.insideSeconds + trapped.outsideSeconds;
+        std::printf(
+            "  convex - GImpact pairs in every %d-th step: %ld, %ld with the convex centre inside the "
+            "mesh body (%ld wholly inside), %.1f us each against %.1f outside, %.3f of the time\n",
+            trapped.every, pairs, trapped.inside, trapped.wholly,
+            trapped.inside > 0 ? 1e6 * trapped.insideSeconds / double(trapped.inside) : 0.0,
+            trapped.outside > 0 ? 1e6 * trapped.outsideSeconds / double(trapped.outside) : 0.0,
+            total > 0.0 ? trapped.insideSeconds / total : 0.0);
+    }
     // Bullet's swept-sphere tests of the bodies that move more than their CCD motion threshold.
     for (const char* sweep : {"CCD motion clamping", "predictive convexSweepTest"}) {
         const auto found = zones.entries.find(sweep);
