@@ -132,8 +132,7 @@ void countTrapped(const btCollisionObject* convex, const btCollisionObject* mesh
     for (const auto& t : m.triangles)
         depth = std::min(
             depth,
-            (closestPointAndFeature(centre, m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]).point -
-             centre)
+            (closestPointOnTriangle(centre, m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]) - centre)
                 .norm());
     btVector3 sphereCentre;
     btScalar radius;
@@ -268,9 +267,9 @@ int main(int argc, char** argv) {
     for (int s = 0; s < scene.world.steps; ++s) {
         if (s == bulletLeavesUntil) broadphase->setFraction(scaledFraction);
         const double fractureBefore = fractureWorld->fractureStatistics().fractureSeconds();
+        trapped.step = s;
         Timer timer;
         world.stepFrame();
-        ++trapped.step;
         const double seconds = timer.seconds();
         stepSeconds += seconds;
         if (s >= bulletLeavesUntil)
