@@ -7,6 +7,7 @@
 #include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/GraphHullShape.h>
 #include <btFracture/geometry/HullSimplification.h>
+#include <btFracture/geometry/SplitDecomposition.h>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
@@ -171,13 +172,6 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
     const double volume = computeMassProperties(mesh).volume;
     const double margin = options.margin > 0.0 ? options.margin : std::min(0.04, 0.02 * std::cbrt(volume));
 
-    if (kind == CollisionShapeKind::ConvexDecomposition &&
-        mesh.triangles.size() > static_cast<std::size_t>(std::max(0, options.decompositionTriangleLimit))) {
-        logf(LogLevel::Debug, name, ": ", mesh.triangles.size(),
-             " triangles exceed the decomposition limit of ", options.decompositionTriangleLimit,
-             "; using a GImpact mesh shape");
-        kind = CollisionShapeKind::GImpactMesh;
-    }
     auto storage = std::make_unique<CollisionShapeStorage>();
     storage->kind_ = kind;
     storage->margin_ = margin;
@@ -207,7 +201,20 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
             break;
         }
         case CollisionShapeKind::ConvexDecomposition: {
-            const auto clusters = decompose(mesh, options);
+            std::vector<std::vector<Eigen::Vector3d>> clusters;
+            if (mesh.triangles.size() <=
+                static_cast<std::size_t>(std::max(0, options.decompositionTriangleLimit))) {
+                clusters = decompose(mesh, options);
+            } else {
+                SplitDecompositionOptions split;
+                split.maxPieces = options.splitMaxPieces;
+                split.concavity = options.splitConcavity;
+                SplitDecomposition d = splitDecomposition(mesh, split);
+                logf(LogLevel::Debug, name, ": ", mesh.triangles.size(), " triangles (HACD limit ",
+                     options.decompositionTriangleLimit, "): split into ", d.pieces.size(),
+                     " convex pieces, hull volume ", d.hullVolume / d.meshVolume, " of the mesh's");
+                clusters = std::move(d.pieces);
+            }
             auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(clusters.size()));
             btTransform identity;
             identity.setIdentity();

@@ -10,8 +10,9 @@
 //    share a cut face then touch instead of overlapping. With options.hullMaxVertices > 0 at
 //    most that many of the shrunk hull's corners are kept (every hull, also the pieces of a
 //    decomposition).
-//  - ConvexDecomposition: btCompoundShape of shrunk convex hulls of HACD clusters (Bullet's
-//    libHACD). Meshes above options.decompositionTriangleLimit get a GImpactMesh instead.
+//  - ConvexDecomposition: btCompoundShape of shrunk convex hulls: of HACD clusters (Bullet's
+//    libHACD) up to options.decompositionTriangleLimit triangles, of plane-split parts
+//    (geometry/SplitDecomposition.h) above it. GImpactMesh only where no piece has volume.
 //  - GImpactMesh: btGImpactMeshShape over the triangles (what FractureRB used); the dispatcher
 //    needs btGImpactCollisionAlgorithm (btFractureDynamicsWorld registers it).
 //
@@ -19,11 +20,10 @@
 // cores): a pile of 24 tori (576 triangles each) steps in 4.0 ms with HACD compounds against 10.4
 // ms with GImpact; both rest equally still (mean speed 3.3 vs 3.6 mm/s) and none tunnels. HACD
 // costs time once per shape and grows fast with the mesh: 0.28 s at 576 triangles, 1.2 s at
-// 1024, 3.5-5.4 s at 2304; GImpact builds in under 3 ms. A compound saves about 0.27 ms per body
-// and step, so it pays for itself after ~1000 steps at 576 triangles but would stall a fracture
-// event for seconds on a full collision mesh. Hence: ConvexDecomposition by default for meshes up
-// to 600 triangles (the small fragments of §5.2 (b), which never break again and live long),
-// GImpactMesh above; either can be forced (kind GImpactMesh, or a larger triangle limit).
+// 1024, 3.5-5.4 s at 2304. Plane splits take about 0.09 s at 5,000 triangles (16 pieces), and
+// with them falling_boxes steps its rigid bodies in 26.4 ms instead of 76.1 ms with GImpact
+// meshes (docs/rigid-body-time.md). Either kind can be forced (kind GImpactMesh, or a larger
+// triangle limit for HACD).
 #include <btFracture/core/TriangleMesh.h>
 #include <btFracture/geometry/ConvexPenetration.h>
 
@@ -44,8 +44,12 @@ struct CollisionShapeOptions {
     // bounding-box diagonal, and the largest number of hull vertices per piece.
     double decompositionConcavity = 0.02;
     int decompositionMaxHullVertices = 64;
-    // ConvexDecomposition falls back to GImpactMesh for meshes with more triangles than this.
+    // ConvexDecomposition uses HACD up to this many triangles and plane splits
+    // (geometry/SplitDecomposition.h) above, with at most splitMaxPieces pieces whose hulls exceed
+    // their part's volume by at most splitConcavity times the mesh volume (unless the budget ends).
     int decompositionTriangleLimit = 600;
+    int splitMaxPieces = 16;
+    double splitConcavity = 0.02;
     // Corners kept per convex hull (geometry/HullSimplification.h; 0 = all, the default). Bullet's
     // convex narrowphase scans every corner per support query; the budgeted hull lies inside the
     // full one, so fragments that did not overlap still do not. Off by default: with 48 corners

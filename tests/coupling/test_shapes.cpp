@@ -74,10 +74,20 @@ TEST(CollisionShapes, DecompositionCoversANonConvexMesh) {
     const double exact = computeMassProperties(l).volume;
     EXPECT_LT(volume, 1.1 * exact);
     EXPECT_GT(volume, 0.6 * exact);  // shrunk by the margin
-    // Above the triangle limit the decomposition falls back to GImpact (HACD would take seconds).
+    // Above HACD's triangle limit the mesh is split by planes (HACD would take seconds): the L
+    // splits at its inner corner (and maybe again, where the sampled volumes err), the torus into
+    // several pieces within the budget.
+    CollisionShapeOptions split;
+    split.decompositionTriangleLimit = 0;
+    const auto splitL = buildCollisionShape(l, CollisionShapeKind::ConvexDecomposition, split);
+    EXPECT_EQ(splitL->kind(), CollisionShapeKind::ConvexDecomposition);
+    EXPECT_GE(splitL->convexPieces().size(), 2u);
+    EXPECT_LE(splitL->convexPieces().size(), 4u);
     const TriangleMesh ring = makeTorus(0.1, 0.03, 32, 12);  // 768 triangles
-    EXPECT_EQ(buildCollisionShape(ring, CollisionShapeKind::ConvexDecomposition)->kind(),
-              CollisionShapeKind::GImpactMesh);
+    const auto splitRing = buildCollisionShape(ring, CollisionShapeKind::ConvexDecomposition);
+    EXPECT_EQ(splitRing->kind(), CollisionShapeKind::ConvexDecomposition);
+    EXPECT_GE(splitRing->convexPieces().size(), 4u);
+    EXPECT_LE(static_cast<int>(splitRing->convexPieces().size()), CollisionShapeOptions{}.splitMaxPieces);
     const auto gimpact = buildCollisionShape(l, CollisionShapeKind::GImpactMesh);
     EXPECT_TRUE(gimpact->convexPieces().empty());
     EXPECT_EQ(gimpact->shape()->getShapeType(), GIMPACT_SHAPE_PROXYTYPE);

@@ -1,0 +1,292 @@
+// SPDX-License-Identifier: Zlib
+#include <btFracture/geometry/SplitDecomposition.h>
+
+#include <btFracture/core/Error.h>
+#include <btFracture/core/Intersection.h>
+#include <btFracture/core/MassProperties.h>
+#include <btFracture/geometry/ConvexHull.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+namespace btfracture {
+
+namespace {
+
+// Planar polygons stored back to back: polygon i is points[start[i]] .. points[start[i + 1] - 1].
+struct Polygons {
+    std::vector<Eigen::Vector3d> points;
+    std::vector<int> start{0};
+    int size() const { return static_cast<int>(start.size()) - 1; }
+    void close(std::size_t first) {
+        if (points.size() - first < 3)
+            points.resize(first);  // a sliver of the plane: no area
+        else
+            start.push_back(static_cast<int>(points.size()));
+    }
+};
+
+struct Part {
+    Polygons surface;                      // the mesh's triangles clipped to the part's box
+    std::vector<Eigen::Vector3d> corners;  // candidates for its hull's corners
+    std::vector<int> samples;              // inside sample points that lie in the part
+    Eigen::Vector3d boxLo, boxHi;          // the cut planes around it (the mesh's box where uncut)
+    Eigen::Vector3d lo, hi;                // bounding box of the corners
+    double hullVolume = 0.0;
+    double excess = 0.0;  // hull volume beyond the part's volume [m^3]
+    bool splittable = true;
+};
+
+double convexHullVolume(const std::vector<Eigen::Vector3d>& points) {
+    if (points.size() < 4) return 0.0;
+    try {
+        return computeMassProperties(convexHullMesh(points, "split part")).volume;
+    } catch (const Error&) {
+        return 0.0;  // flat
+    }
+}
+
+// Grid points inside the closed mesh: per column along z, the mesh's crossings sorted, inside
+// between alternate pairs. Columns with an odd crossing count (a grazed edge) are left out.
+std::vector<Eigen::Vector3d> insideSamples(const TriangleMesh& mesh, int target) {
+    Eigen::Vector3d lo = mesh.vertices.front(), hi = lo;
+    for (const auto& v : mesh.vertices) {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+    }
+    const Eigen::Vector3d extent = hi - lo;
+    const double cell = std::max(std::cbrt(extent.prod() / target), extent.maxCoeff() / 256.0);
+    if (!(cell > 0.0)) return {};
+    Eigen::Vector3i n;
+    for (int a = 0; a < 3; ++a) n[a] = std::max(1, static_cast<int>(std::ceil(extent[a] / cell)));
+    const Eigen::Vector3d h = extent.cwiseQuotient(n.cast<double>());
+    // Column offsets away from the cell centres: grid-aligned meshes (boxes) then put no edge
+    // through a column.
+    const auto coordinate = [&](int a, int i, double offset) { return lo[a] + (i + 0.5 + offset) * h[a]; };
+    std::vector<std::vector<double>> crossings(static_cast<std::size_t>(n.x()) * n.y());
+    for (const auto& t : mesh.triangles) {
+        const Eigen::Vector3d& a = mesh.vertices[t[0]];
+        const Eigen::Vector3d& b = mesh.vertices[t[1]];
+        const Eigen::Vector3d& c = mesh.vertices[t[2]];
+        const double area = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+        if (area == 0.0) continue;  // vertical: no column crosses it
+        const double x0 = std::min({a.x(), b.x(), c.x()}), x1 = std::max({a.x(), b.x(), c.x()});
+        const double y0 = std::min({a.y(), b.y(), c.y()}), y1 = std::max({a.y(), b.y(), c.y()});
+        const int i0 = std::max(0, static_cast<int>(std::floor((x0 - lo.x()) / h.x() - 0.6)));
+        const int i1 = std::min(n.x() - 1, static_cast<int>(std::ceil((x1 - lo.x()) / h.x())));
+        const int j0 = std::max(0, static_cast<int>(std::floor((y0 - lo.y()) / h.y() - 0.6)));
+        const int j1 = std::min(n.y() - 1, static_cast<int>(std::ceil((y1 - lo.y()) / h.y())));
+        for (int i = i0; i <= i1; ++i) {
+            const double x = coordinate(0, i, 0.0123);
+            if (x < x0 || x > x1) continue;
+            for (int j = j0; j <= j1; ++j) {
+                const double y = coordinate(1, j, 0.0371);
+                if (y < y0 || y > y1) continue;
+                const double wa = ((b.x() - x) * (c.y() - y) - (b.y() - y) * (c.x() - x)) / area;
+                const double wb = ((c.x() - x) * (a.y() - y) - (c.y() - y) * (a.x() - x)) / area;
+                const double wc = 1.0 - wa - wb;
+                if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
+                crossings[static_cast<std::size_t>(i) * n.y() + j].push_back(wa * a.z() + wb * b.z() +
+                                                                             wc * c.z());
+            }
+        }
+    }
+    std::vector<Eigen::Vector3d> samples;
+    for (int i = 0; i < n.x(); ++i)
+        for (int j = 0; j < n.y(); ++j) {
+            std::vector<double>& z = crossings[static_cast<std::size_t>(i) * n.y() + j];
+            if (z.empty() || z.size() % 2 != 0) continue;
+            std::sort(z.begin(), z.end());
+            for (std::size_t k = 0; k + 1 < z.size(); k += 2) {
+                const int first = std::max(0, static_cast<int>(std::ceil((z[k] - lo.z()) / h.z() - 0.5)));
+                for (int m = first; m < n.z(); ++m) {
+                    const double zm = coordinate(2, m, 0.0);
+                    if (zm > z[k + 1]) break;
+                    if (zm >= z[k])
+                        samples.emplace_back(coordinate(0, i, 0.0123), coordinate(1, j, 0.0371), zm);
+                }
+            }
+        }
+    return samples;
+}
+
+void evaluate(Part& part, double meshVolume, std::size_t totalSamples) {
+    part.lo = part.hi = part.corners.front();
+    for (const auto& p : part.corners) {
+        part.lo = part.lo.cwiseMin(p);
+        part.hi = part.hi.cwiseMax(p);
+    }
+    part.hullVolume = convexHullVolume(part.corners);
+    const double volume = meshVolume * double(part.samples.size()) / double(totalSamples);
+    part.excess = part.hullVolume - volume;
+}
+
+// Cuts parts of one mesh's solid. A part's corners are the corners of its surface polygons (the
+// clipped triangles, whose edges on the cut planes bound its caps) and the corners of its box of
+// cut planes that lie inside the solid: together the corners of the part, so their hull holds it.
+class Splitter {
+public:
+    Splitter(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& samples)
+        : mesh_(mesh), samples_(samples) {
+        lo_ = hi_ = mesh.vertices.front();
+        for (const auto& v : mesh.vertices) {
+            lo_ = lo_.cwiseMin(v);
+            hi_ = hi_.cwiseMax(v);
+        }
+    }
+
+    const Eigen::Vector3d& lo() const { return lo_; }
+    const Eigen::Vector3d& hi() const { return hi_; }
+
+    // The part cut by the plane x[axis] = value into its sides x[axis] <= value and >= value.
+    std::pair<Part, Part> split(const Part& part, int axis, double value) {
+        std::pair<Part, Part> sides;
+        Part& below = sides.first;
+        Part& above = sides.second;
+        below.boxLo = above.boxLo = part.boxLo;
+        below.boxHi = above.boxHi = part.boxHi;
+        below.boxHi[axis] = above.boxLo[axis] = value;
+        for (const auto& p : part.corners) {
+            if (p[axis] <= value) below.corners.push_back(p);
+            if (p[axis] >= value) above.corners.push_back(p);
+        }
+        for (int s = 0; s < part.surface.size(); ++s) {
+            const Eigen::Vector3d* polygon = part.surface.points.data() + part.surface.start[s];
+            const int count = part.surface.start[s + 1] - part.surface.start[s];
+            const std::size_t belowFirst = below.surface.points.size(),
+                              aboveFirst = above.surface.points.size();
+            for (int k = 0; k < count; ++k) {
+                const Eigen::Vector3d& p = polygon[k];
+                const Eigen::Vector3d& q = polygon[(k + 1) % count];
+                const double dp = p[axis] - value, dq = q[axis] - value;
+                if (dp <= 0.0) below.surface.points.push_back(p);
+                if (dp >= 0.0) above.surface.points.push_back(p);
+                if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) {
+                    Eigen::Vector3d x = p + (dp / (dp - dq)) * (q - p);
+                    x[axis] = value;
+                    below.surface.points.push_back(x);
+                    above.surface.points.push_back(x);
+                    below.corners.push_back(x);
+                    above.corners.push_back(x);
+                }
+            }
+            below.surface.close(belowFirst);
+            above.surface.close(aboveFirst);
+        }
+        for (Part* side : {&below, &above}) addInsideBoxCorners(*side, axis, value);
+        for (int i : part.samples) (samples_[i][axis] <= value ? below : above).samples.push_back(i);
+        return sides;
+    }
+
+private:
+    // The corners of the part's box on its new plane x[axis] = value that lie inside the solid.
+    // Corners on the mesh's bounding box are left out: they are on the surface at most, where
+    // the surface polygons already reach.
+    void addInsideBoxCorners(Part& part, int axis, double value) {
+        const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+        for (const double u : {part.boxLo[a1], part.boxHi[a1]})
+            for (const double v : {part.boxLo[a2], part.boxHi[a2]}) {
+                if (u == lo_[a1] || u == hi_[a1] || v == lo_[a2] || v == hi_[a2]) continue;
+                Eigen::Vector3d corner;
+                corner[a1] = u;
+                corner[a2] = v;
+                corner[axis] = value;
+                if (isInside(corner)) part.corners.push_back(corner);
+            }
+    }
+
+    bool isInside(const Eigen::Vector3d& p) {
+        const auto key = std::make_tuple(p.x(), p.y(), p.z());
+        const auto found = inside_.find(key);
+        if (found != inside_.end()) return found->second;
+        const bool in = std::abs(windingNumber(mesh_.vertices, mesh_.triangles, p)) > 0.5;
+        inside_.emplace(key, in);
+        return in;
+    }
+
+    const TriangleMesh& mesh_;
+    const std::vector<Eigen::Vector3d>& samples_;
+    Eigen::Vector3d lo_, hi_;  // the mesh's bounding box
+    std::map<std::tuple<double, double, double>, bool> inside_;
+};
+
+}  // namespace
+
+SplitDecomposition splitDecomposition(const TriangleMesh& mesh, const SplitDecompositionOptions& options) {
+    const std::string name = mesh.name.empty() ? std::string("<unnamed mesh>") : mesh.name;
+    if (options.maxPieces < 1 || !(options.concavity >= 0.0) || options.volumeSamples < 1) {
+        std::ostringstream out;
+        out << name << ": split decomposition options out of range (max pieces " << options.maxPieces
+            << ", need >= 1; concavity " << options.concavity << ", need >= 0; volume samples "
+            << options.volumeSamples << ", need >= 1)";
+        throw Error(out.str());
+    }
+    SplitDecomposition result;
+    result.meshVolume = mesh.triangles.empty() ? 0.0 : computeMassProperties(mesh).volume;
+    if (!(result.meshVolume > 0.0))
+        throw Error(name + ": split decomposition needs a closed mesh with volume");
+
+    const std::vector<Eigen::Vector3d> samples = insideSamples(mesh, options.volumeSamples);
+    Splitter splitter(mesh, samples);
+    std::vector<Part> parts(1);
+    Part& root = parts.front();
+    root.corners = mesh.vertices;
+    root.boxLo = splitter.lo();
+    root.boxHi = splitter.hi();
+    for (const auto& t : mesh.triangles) {
+        const std::size_t first = root.surface.points.size();
+        for (int v : t) root.surface.points.push_back(mesh.vertices[v]);
+        root.surface.close(first);
+    }
+    root.samples.resize(samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i) root.samples[i] = static_cast<int>(i);
+    evaluate(root, result.meshVolume, std::max<std::size_t>(1, samples.size()));
+    // Without samples (a mesh thinner than the grid) no part volume is known: one piece.
+    if (samples.empty()) root.splittable = false;
+
+    const double tolerance = options.concavity * result.meshVolume;
+    while (static_cast<int>(parts.size()) < options.maxPieces) {
+        int worst = -1;
+        for (int k = 0; k < static_cast<int>(parts.size()); ++k)
+            if (parts[k].splittable && parts[k].excess > tolerance &&
+                (worst < 0 || parts[k].excess > parts[worst].excess))
+                worst = k;
+        if (worst < 0) break;
+        Part& part = parts[worst];
+        std::pair<Part, Part> best;
+        double bestVolume = std::numeric_limits<double>::infinity();
+        for (int axis = 0; axis < 3; ++axis) {
+            const double width = part.hi[axis] - part.lo[axis];
+            if (!(width > 1e-9 * (part.hi - part.lo).norm())) continue;
+            for (const double fraction : {0.25, 0.5, 0.75}) {
+                std::pair<Part, Part> sides = splitter.split(part, axis, part.lo[axis] + fraction * width);
+                if (sides.first.surface.size() == 0 || sides.second.surface.size() == 0) continue;
+                evaluate(sides.first, result.meshVolume, samples.size());
+                evaluate(sides.second, result.meshVolume, samples.size());
+                const double volume = sides.first.hullVolume + sides.second.hullVolume;
+                if (volume < bestVolume) {
+                    bestVolume = volume;
+                    best = std::move(sides);
+                }
+            }
+        }
+        if (best.first.surface.size() == 0) {  // no plane leaves surface on both sides
+            part.splittable = false;
+            continue;
+        }
+        part = std::move(best.first);
+        parts.push_back(std::move(best.second));
+    }
+    for (Part& part : parts) {
+        if (!(part.hullVolume > 0.0)) continue;  // flat: holds no volume
+        result.hullVolume += part.hullVolume;
+        result.pieces.push_back(std::move(part.corners));
+    }
+    return result;
+}
+
+}  // namespace btfracture
