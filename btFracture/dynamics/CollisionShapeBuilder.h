@@ -20,10 +20,11 @@
 // cores): a pile of 24 tori (576 triangles each) steps in 4.0 ms with HACD compounds against 10.4
 // ms with GImpact; both rest equally still (mean speed 3.3 vs 3.6 mm/s) and none tunnels. HACD
 // costs time once per shape and grows fast with the mesh: 0.28 s at 576 triangles, 1.2 s at
-// 1024, 3.5-5.4 s at 2304. Plane splits take about 0.09 s at 5,000 triangles (16 pieces), and
-// with them falling_boxes steps its rigid bodies in 26.4 ms instead of 76.1 ms with GImpact
-// meshes (docs/rigid-body-time.md). Either kind can be forced (kind GImpactMesh, or a larger
-// triangle limit for HACD).
+// 1024, 3.5-5.4 s at 2304. Plane splits take about 0.09 s at 5,000 triangles (16 pieces); with
+// them for the fragments that cannot break, falling_boxes steps its rigid bodies in 37.5 ms
+// instead of 76.1 ms with GImpact meshes (docs/rigid-body-time.md; collisionShapeKind in
+// FractureBodySettings.h keeps GImpact meshes for bodies that can break). Either kind can be
+// forced (kind GImpactMesh, or a larger triangle limit for HACD).
 #include <btFracture/core/TriangleMesh.h>
 #include <btFracture/geometry/ConvexPenetration.h>
 

@@ -2,7 +2,9 @@
 #include <btFracture/dynamics/FractureBodySettings.h>
 
 #include <btFracture/core/Error.h>
+#include <btFracture/geometry/ConvexHull.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -27,6 +29,16 @@ void validate(const FractureBodySettings& s, const std::string& body) {
     else if (s.refractureDepth < 0)
         problem << "refractureDepth " << s.refractureDepth << " (need >= 0)";
     if (problem.tellp() > 0) throw Error(where + ": " + problem.str());
+}
+
+CollisionShapeKind collisionShapeKind(const FractureBodySettings& settings, const TriangleMesh& mesh) {
+    if (isConvex(mesh)) return CollisionShapeKind::ConvexHull;
+    const bool breaks = settings.fracturable && settings.refractureDepth <= settings.maxRefractureDepth;
+    if (breaks && settings.concaveShapeKind == CollisionShapeKind::ConvexDecomposition &&
+        mesh.triangles.size() >
+            static_cast<std::size_t>(std::max(0, settings.shapeOptions.decompositionTriangleLimit)))
+        return CollisionShapeKind::GImpactMesh;
+    return settings.concaveShapeKind;
 }
 
 }  // namespace btfracture

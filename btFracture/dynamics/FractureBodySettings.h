@@ -34,4 +34,11 @@ struct FractureBodySettings : FractureMethodSettings {
 // Throws btfracture::Error naming `body` and the offending field when a value is out of range.
 void validate(const FractureBodySettings& settings, const std::string& body);
 
+// Collision shape kind of a body with these settings and this closed mesh: a convex hull when
+// the mesh is convex. A body that can still break and whose mesh is above HACD's triangle limit
+// keeps a GImpact mesh: Bullet's contact points on its shape become the fracture loads (Eq. 6),
+// and convex pieces put them on hull faces that bridge the mesh's hollows
+// (docs/rigid-body-time.md). Else settings.concaveShapeKind.
+CollisionShapeKind collisionShapeKind(const FractureBodySettings& settings, const TriangleMesh& mesh);
+
 }  // namespace btfracture

@@ -16,7 +16,6 @@
 #include <btFracture/dynamics/SeparatedConvexPairs.h>
 #include <btFracture/dynamics/SweepCandidateFilter.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
-#include <btFracture/geometry/ConvexHull.h>
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btCollisionConfiguration.h>
@@ -779,9 +778,9 @@ std::vector<btFractureRigidBody*> btFractureDynamicsWorld::spawnFragments(btFrac
             settings.refractureDepth = parentSettings.refractureDepth + 1;
         settings.fracturable = breaks && parentSettings.fracturable;
 
-        const CollisionShapeKind kind = spec.cls == FragmentSpec::Class::ConvexHull || isConvex(mesh)
+        const CollisionShapeKind kind = spec.cls == FragmentSpec::Class::ConvexHull
                                             ? CollisionShapeKind::ConvexHull
-                                            : parentSettings.concaveShapeKind;
+                                            : collisionShapeKind(settings, mesh);
         auto shape = buildCollisionShape(mesh, kind, parentSettings.shapeOptions);
         const btTransform local = toBullet(axes.rotation, spec.centreOfMass);
         auto body = std::make_unique<btFractureRigidBody>(

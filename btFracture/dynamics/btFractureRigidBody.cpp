@@ -69,9 +69,7 @@ btFractureRigidBody::Prepared btFractureRigidBody::prepareModelMesh(TriangleMesh
     p.principalInertia = material.density() * axes.moments;
     p.bodyInModelFrame = toBullet(axes.rotation, mp.centreOfMass);
     p.worldTransform = modelTransform * p.bodyInModelFrame;
-    const CollisionShapeKind kind =
-        isConvex(mesh) ? CollisionShapeKind::ConvexHull : settings.concaveShapeKind;
-    p.shape = buildCollisionShape(mesh, kind, settings.shapeOptions);
+    p.shape = buildCollisionShape(mesh, collisionShapeKind(settings, mesh), settings.shapeOptions);
     p.mesh = std::move(mesh);
     return p;
 }

@@ -9,9 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <sstream>
-#include <tuple>
 
 namespace btfracture {
 
@@ -143,7 +141,7 @@ public:
     const Eigen::Vector3d& hi() const { return hi_; }
 
     // The part cut by the plane x[axis] = value into its sides x[axis] <= value and >= value.
-    std::pair<Part, Part> split(const Part& part, int axis, double value) {
+    std::pair<Part, Part> split(const Part& part, int axis, double value) const {
         std::pair<Part, Part> sides;
         Part& below = sides.first;
         Part& above = sides.second;
@@ -186,7 +184,7 @@ private:
     // The corners of the part's box on its new plane x[axis] = value that lie inside the solid.
     // Corners on the mesh's bounding box are left out: they are on the surface at most, where
     // the surface polygons already reach.
-    void addInsideBoxCorners(Part& part, int axis, double value) {
+    void addInsideBoxCorners(Part& part, int axis, double value) const {
         const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
         for (const double u : {part.boxLo[a1], part.boxHi[a1]})
             for (const double v : {part.boxLo[a2], part.boxHi[a2]}) {
@@ -199,19 +197,13 @@ private:
             }
     }
 
-    bool isInside(const Eigen::Vector3d& p) {
-        const auto key = std::make_tuple(p.x(), p.y(), p.z());
-        const auto found = inside_.find(key);
-        if (found != inside_.end()) return found->second;
-        const bool in = std::abs(windingNumber(mesh_.vertices, mesh_.triangles, p)) > 0.5;
-        inside_.emplace(key, in);
-        return in;
+    bool isInside(const Eigen::Vector3d& p) const {
+        return std::abs(windingNumber(mesh_.vertices, mesh_.triangles, p)) > 0.5;
     }
 
     const TriangleMesh& mesh_;
     const std::vector<Eigen::Vector3d>& samples_;
     Eigen::Vector3d lo_, hi_;  // the mesh's bounding box
-    std::map<std::tuple<double, double, double>, bool> inside_;
 };
 
 }  // namespace
@@ -257,21 +249,31 @@ SplitDecomposition splitDecomposition(const TriangleMesh& mesh, const SplitDecom
                 worst = k;
         if (worst < 0) break;
         Part& part = parts[worst];
-        std::pair<Part, Part> best;
-        double bestVolume = std::numeric_limits<double>::infinity();
+        // Nine candidate planes, cut in parallel; the first with the smallest summed hull volume
+        // wins (the same on any thread count).
+        std::vector<std::pair<int, double>> planes;
         for (int axis = 0; axis < 3; ++axis) {
             const double width = part.hi[axis] - part.lo[axis];
             if (!(width > 1e-9 * (part.hi - part.lo).norm())) continue;
-            for (const double fraction : {0.25, 0.5, 0.75}) {
-                std::pair<Part, Part> sides = splitter.split(part, axis, part.lo[axis] + fraction * width);
-                if (sides.first.surface.size() == 0 || sides.second.surface.size() == 0) continue;
-                evaluate(sides.first, result.meshVolume, samples.size());
-                evaluate(sides.second, result.meshVolume, samples.size());
-                const double volume = sides.first.hullVolume + sides.second.hullVolume;
-                if (volume < bestVolume) {
-                    bestVolume = volume;
-                    best = std::move(sides);
-                }
+            for (const double fraction : {0.25, 0.5, 0.75})
+                planes.emplace_back(axis, part.lo[axis] + fraction * width);
+        }
+        std::vector<std::pair<Part, Part>> cuts(planes.size());
+#pragma omp parallel for schedule(dynamic, 1)
+        for (int c = 0; c < static_cast<int>(planes.size()); ++c) {
+            cuts[c] = splitter.split(part, planes[c].first, planes[c].second);
+            if (cuts[c].first.surface.size() == 0 || cuts[c].second.surface.size() == 0) continue;
+            evaluate(cuts[c].first, result.meshVolume, samples.size());
+            evaluate(cuts[c].second, result.meshVolume, samples.size());
+        }
+        std::pair<Part, Part> best;
+        double bestVolume = std::numeric_limits<double>::infinity();
+        for (auto& cut : cuts) {
+            if (cut.first.surface.size() == 0 || cut.second.surface.size() == 0) continue;
+            const double volume = cut.first.hullVolume + cut.second.hullVolume;
+            if (volume < bestVolume) {
+                bestVolume = volume;
+                best = std::move(cut);
             }
         }
         if (best.first.surface.size() == 0) {  // no plane leaves surface on both sides

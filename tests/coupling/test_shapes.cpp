@@ -93,6 +93,23 @@ TEST(CollisionShapes, DecompositionCoversANonConvexMesh) {
     EXPECT_EQ(gimpact->shape()->getShapeType(), GIMPACT_SHAPE_PROXYTYPE);
 }
 
+// Bodies that can break keep their mesh surface above HACD's limit (their contact points are
+// their fracture loads); those that cannot get convex pieces; convex meshes get a hull.
+TEST(CollisionShapes, KindFollowsWhetherTheBodyCanBreak) {
+    const TriangleMesh ring = makeTorus(0.1, 0.03, 32, 12);  // 768 triangles
+    FractureBodySettings settings;
+    EXPECT_EQ(collisionShapeKind(settings, ring), CollisionShapeKind::GImpactMesh);
+    EXPECT_EQ(collisionShapeKind(settings, test::lShape(0.1, 0.02)), CollisionShapeKind::ConvexDecomposition);
+    EXPECT_EQ(collisionShapeKind(settings, makeGeodesicSphere(0.1, 4)), CollisionShapeKind::ConvexHull);
+    settings.refractureDepth = settings.maxRefractureDepth + 1;
+    EXPECT_EQ(collisionShapeKind(settings, ring), CollisionShapeKind::ConvexDecomposition);
+    settings.refractureDepth = 0;
+    settings.fracturable = false;
+    EXPECT_EQ(collisionShapeKind(settings, ring), CollisionShapeKind::ConvexDecomposition);
+    settings.concaveShapeKind = CollisionShapeKind::GImpactMesh;
+    EXPECT_EQ(collisionShapeKind(settings, ring), CollisionShapeKind::GImpactMesh);
+}
+
 TEST(CollisionShapes, NonConvexBodiesRestStablyOnTheGround) {
     for (const CollisionShapeKind kind :
          {CollisionShapeKind::ConvexDecomposition, CollisionShapeKind::GImpactMesh}) {
