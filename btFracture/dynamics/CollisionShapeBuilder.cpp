@@ -202,8 +202,7 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
         }
         case CollisionShapeKind::ConvexDecomposition: {
             std::vector<std::vector<Eigen::Vector3d>> clusters;
-            if (mesh.triangles.size() <=
-                static_cast<std::size_t>(std::max(0, options.decompositionTriangleLimit))) {
+            if (options.fitsHacd(mesh.triangles.size())) {
                 clusters = decompose(mesh, options);
             } else {
                 SplitDecompositionOptions split;

@@ -28,6 +28,8 @@
 #include <btFracture/core/TriangleMesh.h>
 #include <btFracture/geometry/ConvexPenetration.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <memory>
 #include <vector>
 
@@ -51,6 +53,9 @@ struct CollisionShapeOptions {
     int decompositionTriangleLimit = 600;
     int splitMaxPieces = 16;
     double splitConcavity = 0.02;
+    bool fitsHacd(std::size_t triangles) const {
+        return triangles <= static_cast<std::size_t>(std::max(0, decompositionTriangleLimit));
+    }
     // Corners kept per convex hull (geometry/HullSimplification.h; 0 = all, the default). Bullet's
     // convex narrowphase scans every corner per support query; the budgeted hull lies inside the
     // full one, so fragments that did not overlap still do not. Off by default: with 48 corners

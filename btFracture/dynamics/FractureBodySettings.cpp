@@ -4,7 +4,6 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/geometry/ConvexHull.h>
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -35,8 +34,7 @@ CollisionShapeKind collisionShapeKind(const FractureBodySettings& settings, cons
     if (isConvex(mesh)) return CollisionShapeKind::ConvexHull;
     const bool breaks = settings.fracturable && settings.refractureDepth <= settings.maxRefractureDepth;
     if (breaks && settings.concaveShapeKind == CollisionShapeKind::ConvexDecomposition &&
-        mesh.triangles.size() >
-            static_cast<std::size_t>(std::max(0, settings.shapeOptions.decompositionTriangleLimit)))
+        !settings.shapeOptions.fitsHacd(mesh.triangles.size()))
         return CollisionShapeKind::GImpactMesh;
     return settings.concaveShapeKind;
 }

@@ -6,6 +6,8 @@
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/geometry/ConvexHull.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,6 +30,15 @@ struct Polygons {
     }
 };
 
+double convexHullVolume(const std::vector<Eigen::Vector3d>& points) {
+    if (points.size() < 4) return 0.0;
+    try {
+        return computeMassProperties(convexHullMesh(points, "split part")).volume;
+    } catch (const Error&) {
+        return 0.0;  // flat
+    }
+}
+
 struct Part {
     Polygons surface;                      // the mesh's triangles clipped to the part's box
     std::vector<Eigen::Vector3d> corners;  // candidates for its hull's corners
@@ -39,24 +50,12 @@ struct Part {
     bool splittable = true;
 };
 
-double convexHullVolume(const std::vector<Eigen::Vector3d>& points) {
-    if (points.size() < 4) return 0.0;
-    try {
-        return computeMassProperties(convexHullMesh(points, "split part")).volume;
-    } catch (const Error&) {
-        return 0.0;  // flat
-    }
-}
-
 // Grid points inside the closed mesh: per column along z, the mesh's crossings sorted, inside
 // between alternate pairs. Columns with an odd crossing count (a grazed edge) are left out.
-std::vector<Eigen::Vector3d> insideSamples(const TriangleMesh& mesh, int target) {
-    Eigen::Vector3d lo = mesh.vertices.front(), hi = lo;
-    for (const auto& v : mesh.vertices) {
-        lo = lo.cwiseMin(v);
-        hi = hi.cwiseMax(v);
-    }
-    const Eigen::Vector3d extent = hi - lo;
+std::vector<Eigen::Vector3d> insideSamples(const TriangleMesh& mesh, const Eigen::AlignedBox3d& box,
+                                           int target) {
+    const Eigen::Vector3d& lo = box.min();
+    const Eigen::Vector3d extent = box.sizes();
     const double cell = std::max(std::cbrt(extent.prod() / target), extent.maxCoeff() / 256.0);
     if (!(cell > 0.0)) return {};
     Eigen::Vector3i n;
@@ -128,17 +127,9 @@ void evaluate(Part& part, double meshVolume, std::size_t totalSamples) {
 // cut planes that lie inside the solid: together the corners of the part, so their hull holds it.
 class Splitter {
 public:
-    Splitter(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& samples)
-        : mesh_(mesh), samples_(samples) {
-        lo_ = hi_ = mesh.vertices.front();
-        for (const auto& v : mesh.vertices) {
-            lo_ = lo_.cwiseMin(v);
-            hi_ = hi_.cwiseMax(v);
-        }
-    }
-
-    const Eigen::Vector3d& lo() const { return lo_; }
-    const Eigen::Vector3d& hi() const { return hi_; }
+    Splitter(const TriangleMesh& mesh, const Eigen::AlignedBox3d& box,
+             const std::vector<Eigen::Vector3d>& samples)
+        : mesh_(mesh), samples_(samples), lo_(box.min()), hi_(box.max()) {}
 
     // The part cut by the plane x[axis] = value into its sides x[axis] <= value and >= value.
     std::pair<Part, Part> split(const Part& part, int axis, double value) const {
@@ -203,7 +194,7 @@ private:
 
     const TriangleMesh& mesh_;
     const std::vector<Eigen::Vector3d>& samples_;
-    Eigen::Vector3d lo_, hi_;  // the mesh's bounding box
+    const Eigen::Vector3d lo_, hi_;  // the mesh's bounding box
 };
 
 }  // namespace
@@ -222,13 +213,15 @@ SplitDecomposition splitDecomposition(const TriangleMesh& mesh, const SplitDecom
     if (!(result.meshVolume > 0.0))
         throw Error(name + ": split decomposition needs a closed mesh with volume");
 
-    const std::vector<Eigen::Vector3d> samples = insideSamples(mesh, options.volumeSamples);
-    Splitter splitter(mesh, samples);
+    Eigen::AlignedBox3d box;
+    for (const auto& v : mesh.vertices) box.extend(v);
+    const std::vector<Eigen::Vector3d> samples = insideSamples(mesh, box, options.volumeSamples);
+    const Splitter splitter(mesh, box, samples);
     std::vector<Part> parts(1);
     Part& root = parts.front();
     root.corners = mesh.vertices;
-    root.boxLo = splitter.lo();
-    root.boxHi = splitter.hi();
+    root.boxLo = box.min();
+    root.boxHi = box.max();
     for (const auto& t : mesh.triangles) {
         const std::size_t first = root.surface.points.size();
         for (int v : t) root.surface.points.push_back(mesh.vertices[v]);

@@ -6,12 +6,12 @@
 
 #include <btFracture/core/Error.h>
 #include <btFracture/core/Intersection.h>
+#include <btFracture/core/Timer.h>
 #include <btFracture/geometry/ConvexHull.h>
 #include <btFracture/geometry/SplitDecomposition.h>
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cstdio>
 #include <random>
 
@@ -49,10 +49,9 @@ double uncovered(const SplitDecomposition& d, const std::vector<Eigen::Vector3d>
 
 SplitDecomposition timed(const TriangleMesh& mesh, const SplitDecompositionOptions& options,
                          const char* what) {
-    const auto start = std::chrono::steady_clock::now();
+    const Timer timer;
     SplitDecomposition d = splitDecomposition(mesh, options);
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double ms = 1e3 * timer.seconds();
     std::printf("%s, %zu triangles, budget %d: %zu pieces, hull / mesh volume %.4f, %.1f ms\n", what,
                 mesh.triangles.size(), options.maxPieces, d.pieces.size(), d.hullVolume / d.meshVolume, ms);
     return d;
