@@ -348,6 +348,24 @@ TriangleMesh convexHullMesh(const std::vector<Eigen::Vector3d>& points, const st
     return lean.mesh(name);
 }
 
+double convexHullVolume(const std::vector<Eigen::Vector3d>& points, const std::string& name) {
+    for (const auto& p : points)
+        if (!p.allFinite() || p.cwiseAbs().maxCoeff() > 1e300)
+            throw Error(name + ": convex hull input has a non-finite point or one beyond 1e300");
+    TriangleMesh hull;
+    try {
+        hull = convexHullMesh(points, name);
+    } catch (const Error&) {
+        return 0.0;  // flat
+    }
+    // Tetrahedra from the first corner to every face: the hull's own frame, not the origin's.
+    const Eigen::Vector3d& o = hull.vertices.front();
+    double six = 0.0;
+    for (const auto& t : hull.triangles)
+        six += (hull.vertices[t[0]] - o).dot((hull.vertices[t[1]] - o).cross(hull.vertices[t[2]] - o));
+    return six / 6.0;
+}
+
 bool isConvex(const TriangleMesh& mesh, double relativeTolerance) {
     if (mesh.vertices.empty()) return false;
     Eigen::Vector3d lo = mesh.vertices.front(), hi = lo;

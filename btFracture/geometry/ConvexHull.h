@@ -22,6 +22,10 @@ namespace btfracture {
 // than four affinely independent ones).
 TriangleMesh convexHullMesh(const std::vector<Eigen::Vector3d>& points, const std::string& name);
 
+// Volume of convexHullMesh(points) [m^3]; 0 when the points span no volume. Throws
+// btfracture::Error naming `name` when a point is not finite or beyond 1e300.
+double convexHullVolume(const std::vector<Eigen::Vector3d>& points, const std::string& name);
+
 // True when every vertex lies on the inner side of every triangle's plane, within
 // relativeTolerance times the bounding-box diagonal. Expects a closed, outward-oriented mesh.
 bool isConvex(const TriangleMesh& mesh, double relativeTolerance = 1e-9);

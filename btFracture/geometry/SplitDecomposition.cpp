@@ -30,15 +30,6 @@ struct Polygons {
     }
 };
 
-double convexHullVolume(const std::vector<Eigen::Vector3d>& points) {
-    if (points.size() < 4) return 0.0;
-    try {
-        return computeMassProperties(convexHullMesh(points, "split part")).volume;
-    } catch (const Error&) {
-        return 0.0;  // flat
-    }
-}
-
 struct Part {
     Polygons surface;                      // the mesh's triangles clipped to the part's box
     std::vector<Eigen::Vector3d> corners;  // candidates for its hull's corners
@@ -117,7 +108,7 @@ void evaluate(Part& part, double meshVolume, std::size_t totalSamples) {
         part.lo = part.lo.cwiseMin(p);
         part.hi = part.hi.cwiseMax(p);
     }
-    part.hullVolume = convexHullVolume(part.corners);
+    part.hullVolume = convexHullVolume(part.corners, "split part");
     const double volume = meshVolume * double(part.samples.size()) / double(totalSamples);
     part.excess = part.hullVolume - volume;
 }
@@ -234,14 +225,19 @@ SplitDecomposition splitDecomposition(const TriangleMesh& mesh, const SplitDecom
     if (samples.empty()) root.splittable = false;
 
     const double tolerance = options.concavity * result.meshVolume;
+    // Volumes within `tie` of each other are equal: the first in order wins, so that the last
+    // bits of a hull volume (summation order, fused multiply-add) never choose the cut.
+    const double tie = 1e-9 * result.meshVolume;
     while (static_cast<int>(parts.size()) < options.maxPieces) {
-        int worst = -1;
-        for (int k = 0; k < static_cast<int>(parts.size()); ++k)
-            if (parts[k].splittable && parts[k].excess > tolerance &&
-                (worst < 0 || parts[k].excess > parts[worst].excess))
-                worst = k;
-        if (worst < 0) break;
-        Part& part = parts[worst];
+        const auto cuttable = [&](const Part& p) { return p.splittable && p.excess > tolerance; };
+        double largestExcess = -std::numeric_limits<double>::infinity();
+        for (const Part& p : parts)
+            if (cuttable(p)) largestExcess = std::max(largestExcess, p.excess);
+        const auto worstPart = std::find_if(parts.begin(), parts.end(), [&](const Part& p) {
+            return cuttable(p) && p.excess >= largestExcess - tie;
+        });
+        if (worstPart == parts.end()) break;
+        Part& part = *worstPart;
         // Nine candidate planes, cut in parallel; the first with the smallest summed hull volume
         // wins (the same on any thread count).
         std::vector<std::pair<int, double>> planes;
@@ -259,20 +255,23 @@ SplitDecomposition splitDecomposition(const TriangleMesh& mesh, const SplitDecom
             evaluate(cuts[c].first, result.meshVolume, samples.size());
             evaluate(cuts[c].second, result.meshVolume, samples.size());
         }
-        std::pair<Part, Part> best;
-        double bestVolume = std::numeric_limits<double>::infinity();
-        for (auto& cut : cuts) {
-            if (cut.first.surface.size() == 0 || cut.second.surface.size() == 0) continue;
-            const double volume = cut.first.hullVolume + cut.second.hullVolume;
-            if (volume < bestVolume) {
-                bestVolume = volume;
-                best = std::move(cut);
-            }
-        }
-        if (best.first.surface.size() == 0) {  // no plane leaves surface on both sides
+        const auto valid = [](const std::pair<Part, Part>& cut) {
+            return cut.first.surface.size() != 0 && cut.second.surface.size() != 0;
+        };
+        const auto summed = [](const std::pair<Part, Part>& cut) {
+            return cut.first.hullVolume + cut.second.hullVolume;
+        };
+        double smallest = std::numeric_limits<double>::infinity();
+        for (const auto& cut : cuts)
+            if (valid(cut)) smallest = std::min(smallest, summed(cut));
+        const auto chosen = std::find_if(cuts.begin(), cuts.end(), [&](const std::pair<Part, Part>& cut) {
+            return valid(cut) && summed(cut) <= smallest + tie;
+        });
+        if (chosen == cuts.end()) {  // no plane leaves surface on both sides
             part.splittable = false;
             continue;
         }
+        std::pair<Part, Part> best = std::move(*chosen);
         part = std::move(best.first);
         parts.push_back(std::move(best.second));
     }
