@@ -7,6 +7,7 @@
 #include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/GraphHullShape.h>
 #include <btFracture/geometry/HullSimplification.h>
+#include <btFracture/geometry/MeshDecimation.h>
 #include <btFracture/geometry/SplitDecomposition.h>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
@@ -176,14 +177,19 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
     storage->kind_ = kind;
     storage->margin_ = margin;
     CollisionShapeStorage::Impl& impl = *storage->impl_;
-    // A btGImpactMeshShape over the mesh (any closed mesh, convex or not).
-    const auto buildGImpactMesh = [&mesh, margin, &impl] {
-        for (const auto& v : mesh.vertices)
+    // A btGImpactMeshShape over the mesh (any closed mesh, convex or not), decimated to the budget.
+    const auto buildGImpactMesh = [&mesh, margin, &impl, &options] {
+        const int budget = options.gimpactMaxTriangles;
+        const bool decimate = budget > 0 && mesh.triangles.size() > static_cast<std::size_t>(budget);
+        const TriangleMesh coarse = decimate ? decimateMesh(mesh, budget) : TriangleMesh{};
+        const TriangleMesh& collided = decimate ? coarse : mesh;
+        for (const auto& v : collided.vertices)
             impl.vertices.insert(impl.vertices.end(), {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())});
-        for (const auto& t : mesh.triangles) impl.indices.insert(impl.indices.end(), {t[0], t[1], t[2]});
+        for (const auto& t : collided.triangles)
+            impl.indices.insert(impl.indices.end(), {t[0], t[1], t[2]});
         impl.meshInterface = std::make_unique<btTriangleIndexVertexArray>(
-            static_cast<int>(mesh.triangles.size()), impl.indices.data(), 3 * static_cast<int>(sizeof(int)),
-            static_cast<int>(mesh.vertices.size()), impl.vertices.data(),
+            static_cast<int>(collided.triangles.size()), impl.indices.data(), 3 * static_cast<int>(sizeof(int)),
+            static_cast<int>(collided.vertices.size()), impl.vertices.data(),
             3 * static_cast<int>(sizeof(btScalar)));
         auto gimpact = std::make_unique<btGImpactMeshShape>(impl.meshInterface.get());
         gimpact->setMargin(btScalar(margin));

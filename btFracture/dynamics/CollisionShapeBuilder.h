@@ -13,8 +13,9 @@
 //  - ConvexDecomposition: btCompoundShape of shrunk convex hulls: of HACD clusters (Bullet's
 //    libHACD) up to options.decompositionTriangleLimit triangles, of plane-split parts
 //    (geometry/SplitDecomposition.h) above it. GImpactMesh only where no piece has volume.
-//  - GImpactMesh: btGImpactMeshShape over the triangles (what FractureRB used); the dispatcher
-//    needs btGImpactCollisionAlgorithm (btFractureDynamicsWorld registers it).
+//  - GImpactMesh: btGImpactMeshShape over the triangles (what FractureRB used), decimated to
+//    options.gimpactMaxTriangles; the dispatcher needs btGImpactCollisionAlgorithm
+//    (btFractureDynamicsWorld registers it).
 //
 // Choice (bench/bench_fragment_shapes, tori as non-convex fragments, this machine, 2 shared
 // cores): a pile of 24 tori (576 triangles each) steps in 4.0 ms with HACD compounds against 10.4
@@ -56,6 +57,10 @@ struct CollisionShapeOptions {
     bool fitsHacd(std::size_t triangles) const {
         return triangles <= static_cast<std::size_t>(std::max(0, decompositionTriangleLimit));
     }
+    // A GImpact mesh above this many triangles collides as the mesh decimated to it
+    // (geometry/MeshDecimation.h; 0 = every triangle). Bullet tests each triangle whose box meets
+    // the other shape's box, so the cost of a mesh pair grows with its triangle density.
+    int gimpactMaxTriangles = 1500;
     // Corners kept per convex hull (geometry/HullSimplification.h; 0 = all, the default). Bullet's
     // convex narrowphase scans every corner per support query; the budgeted hull lies inside the
     // full one, so fragments that did not overlap still do not. Off by default: with 48 corners

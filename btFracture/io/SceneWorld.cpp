@@ -164,12 +164,15 @@ void SceneWorld::Impl::addBody(const SceneBody& description, const SceneWorldFac
             bodyInShape.translation() = mass.centreOfMass;
             unitDensityInertia = axes.moments;
             body.volume = mass.volume;
-            // A shrunk hull (hull + margin matches the mesh) or a GImpact mesh, as for fragments.
+            // A shrunk hull (hull + margin matches the mesh) or a GImpact mesh over every triangle
+            // (fragments' GImpact meshes are decimated; a scene body is the surface it names).
             const CollisionShapeKind kind = shape.collision == SceneMeshCollision::ConvexHull
                                                 ? CollisionShapeKind::ConvexHull
                                                 : CollisionShapeKind::GImpactMesh;
+            CollisionShapeOptions everyTriangle;
+            everyTriangle.gimpactMaxTriangles = 0;
             try {
-                storage.mesh = buildCollisionShape(mesh, kind);
+                storage.mesh = buildCollisionShape(mesh, kind, everyTriangle);
             } catch (const Error& e) {
                 throw Error(bodyContext(scene, description) + ": " + e.what());
             }

@@ -4,15 +4,20 @@
 #include <btFracture/core/Error.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/Primitives.h>
+#include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/CollisionShapeBuilder.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
 #include <btFracture/dynamics/btFractureDynamicsWorld.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/geometry/ConvexHull.h>
 
+#include <BulletCollision/Gimpact/btGImpactShape.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <gtest/gtest.h>
+
+#include <array>
+#include <vector>
 
 using namespace btfracture;
 
@@ -91,6 +96,49 @@ TEST(CollisionShapes, DecompositionCoversANonConvexMesh) {
     const auto gimpact = buildCollisionShape(l, CollisionShapeKind::GImpactMesh);
     EXPECT_TRUE(gimpact->convexPieces().empty());
     EXPECT_EQ(gimpact->shape()->getShapeType(), GIMPACT_SHAPE_PROXYTYPE);
+}
+
+// A GImpact mesh above options.gimpactMaxTriangles collides as the mesh decimated to that budget,
+// within its collision margin of the surface; a budget of 0 keeps every triangle.
+TEST(CollisionShapes, GImpactMeshKeepsItsTriangleBudget) {
+    const double R = 0.1, r = 0.03;
+    const TriangleMesh ring = makeTorus(R, r, 96, 32);  // 6,144 triangles
+    // The triangles Bullet collides with (a mesh part reads its arrays while locked).
+    const auto triangles = [](const CollisionShapeStorage& s) {
+        const auto* gimpact = static_cast<const btGImpactMeshShape*>(s.shape());
+        std::vector<std::array<Eigen::Vector3d, 3>> out;
+        for (int p = 0; p < gimpact->getMeshPartCount(); ++p) {
+            const btGImpactMeshShapePart* part = gimpact->getMeshPart(p);
+            part->lockChildShapes();
+            const btPrimitiveManagerBase* primitives = part->getPrimitiveManager();
+            for (int t = 0; t < primitives->get_primitive_count(); ++t) {
+                btPrimitiveTriangle triangle;
+                primitives->get_primitive_triangle(t, triangle);
+                out.push_back({toEigen(triangle.m_vertices[0]), toEigen(triangle.m_vertices[1]),
+                               toEigen(triangle.m_vertices[2])});
+            }
+            part->unlockChildShapes();
+        }
+        return out;
+    };
+    // Distance of a point to the torus surface (axis z).
+    const auto offSurface = [&](const Eigen::Vector3d& p) {
+        return std::abs(std::hypot(std::hypot(p.x(), p.y()) - R, p.z()) - r);
+    };
+    CollisionShapeOptions options;
+    ASSERT_EQ(options.gimpactMaxTriangles, 1500);
+    const auto coarse = buildCollisionShape(ring, CollisionShapeKind::GImpactMesh, options);
+    const auto kept = triangles(*coarse);
+    EXPECT_LE(kept.size(), static_cast<std::size_t>(options.gimpactMaxTriangles));
+    EXPECT_GT(kept.size(), static_cast<std::size_t>(options.gimpactMaxTriangles / 2));
+    double worst = 0.0;
+    for (const auto& [a, b, c] : kept)
+        for (const Eigen::Vector3d& p : {a, b, c, Eigen::Vector3d((a + b + c) / 3.0)})
+            worst = std::max(worst, offSurface(p));
+    EXPECT_LT(worst, coarse->margin()) << "decimated surface off the torus by " << worst << " m";
+    options.gimpactMaxTriangles = 0;
+    EXPECT_EQ(triangles(*buildCollisionShape(ring, CollisionShapeKind::GImpactMesh, options)).size(),
+              ring.triangles.size());
 }
 
 // Bodies that can break keep their mesh surface above HACD's limit (their contact points are
