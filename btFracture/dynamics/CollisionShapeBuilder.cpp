@@ -185,12 +185,11 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
         const TriangleMesh& collided = decimate ? coarse : mesh;
         for (const auto& v : collided.vertices)
             impl.vertices.insert(impl.vertices.end(), {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())});
-        for (const auto& t : collided.triangles)
-            impl.indices.insert(impl.indices.end(), {t[0], t[1], t[2]});
+        for (const auto& t : collided.triangles) impl.indices.insert(impl.indices.end(), {t[0], t[1], t[2]});
         impl.meshInterface = std::make_unique<btTriangleIndexVertexArray>(
-            static_cast<int>(collided.triangles.size()), impl.indices.data(), 3 * static_cast<int>(sizeof(int)),
-            static_cast<int>(collided.vertices.size()), impl.vertices.data(),
-            3 * static_cast<int>(sizeof(btScalar)));
+            static_cast<int>(collided.triangles.size()), impl.indices.data(),
+            3 * static_cast<int>(sizeof(int)), static_cast<int>(collided.vertices.size()),
+            impl.vertices.data(), 3 * static_cast<int>(sizeof(btScalar)));
         auto gimpact = std::make_unique<btGImpactMeshShape>(impl.meshInterface.get());
         gimpact->setMargin(btScalar(margin));
         gimpact->updateBound();

@@ -66,7 +66,9 @@ ClippedPolytope clipConvexPolytope(const ConvexPolytope& polytope, const Eigen::
     return clipped;
 }
 
-double hullVolume(const ConvexPolytope& polytope) { return convexHullVolume(polytope.points, "convex piece"); }
+double hullVolume(const ConvexPolytope& polytope) {
+    return convexHullVolume(polytope.points, "convex piece");
+}
 
 Eigen::Vector2d extentAlong(const ConvexPolytope& polytope, const Eigen::Vector3d& direction) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;

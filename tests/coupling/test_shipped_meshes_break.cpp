@@ -119,7 +119,8 @@ int piecesAfterImpact(const TriangleMesh& mesh, double speed) {
     double touch = 0.0;
     for (const auto& v : scaled.vertices) {
         const double d2 = v.x() * v.x() + v.z() * v.z();
-        if (d2 < kBallRadius * kBallRadius) touch = std::max(touch, v.y() + std::sqrt(kBallRadius * kBallRadius - d2));
+        if (d2 < kBallRadius * kBallRadius)
+            touch = std::max(touch, v.y() + std::sqrt(kBallRadius * kBallRadius - d2));
     }
     btSphereShape ballShape{btScalar(kBallRadius)};
     const btScalar mass = btScalar(7850.0 * 4.0 / 3.0 * M_PI * std::pow(kBallRadius, 3));
