@@ -170,6 +170,9 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
     if (options.hullMaxVertices != 0 && options.hullMaxVertices < 4)
         throw Error(name + ": hull vertex budget " + std::to_string(options.hullMaxVertices) +
                     " (need 0 for all corners, or at least 4)");
+    if (options.gimpactMaxTriangles < 0)
+        throw Error(name + ": GImpact triangle budget " + std::to_string(options.gimpactMaxTriangles) +
+                    " (need 0 for every triangle, or a positive count)");
     const double volume = computeMassProperties(mesh).volume;
     const double margin = options.margin > 0.0 ? options.margin : std::min(0.04, 0.02 * std::cbrt(volume));
 

@@ -58,8 +58,8 @@ struct CollisionShapeOptions {
         return triangles <= static_cast<std::size_t>(std::max(0, decompositionTriangleLimit));
     }
     // A GImpact mesh above this many triangles collides as the mesh decimated to it
-    // (geometry/MeshDecimation.h; 0 = every triangle). Bullet tests each triangle whose box meets
-    // the other shape's box, so the cost of a mesh pair grows with its triangle density.
+    // (geometry/MeshDecimation.h; 0 = every triangle, negative is an error). Bullet tests each triangle whose
+    // box meets the other shape's box, so the cost of a mesh pair grows with its triangle density.
     int gimpactMaxTriangles = 1500;
     // Corners kept per convex hull (geometry/HullSimplification.h; 0 = all, the default). Bullet's
     // convex narrowphase scans every corner per support query; the budgeted hull lies inside the

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 using namespace btfracture;
@@ -139,6 +140,13 @@ TEST(CollisionShapes, GImpactMeshKeepsItsTriangleBudget) {
     options.gimpactMaxTriangles = 0;
     EXPECT_EQ(triangles(*buildCollisionShape(ring, CollisionShapeKind::GImpactMesh, options)).size(),
               ring.triangles.size());
+    options.gimpactMaxTriangles = -1;
+    try {
+        buildCollisionShape(ring, CollisionShapeKind::GImpactMesh, options);
+        ADD_FAILURE() << "a negative triangle budget was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("GImpact triangle budget -1"), std::string::npos) << e.what();
+    }
 }
 
 // Bodies that can break keep their mesh surface above HACD's limit (their contact points are
