@@ -14,7 +14,7 @@ packages=(
   libbullet-dev libbullet-extras-dev libeigen3-dev libccd-dev
   libopenvdb-dev libtbb-dev libboost-dev libboost-iostreams-dev
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libpng-dev
-  parallel shellcheck python3-matplotlib nodejs
+  parallel shellcheck clang-format python3-matplotlib nodejs
 )
 # Debian's npm; a Node.js from elsewhere (NodeSource) brings its own and conflicts with it.
 command -v npm >/dev/null 2>&1 || packages+=(npm)
