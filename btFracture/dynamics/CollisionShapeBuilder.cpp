@@ -8,6 +8,7 @@
 #include <btFracture/dynamics/GraphHullShape.h>
 #include <btFracture/geometry/HullSimplification.h>
 #include <btFracture/geometry/MeshDecimation.h>
+#include <btFracture/geometry/MeshInset.h>
 #include <btFracture/geometry/SplitDecomposition.h>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
@@ -180,12 +181,17 @@ std::unique_ptr<CollisionShapeStorage> buildCollisionShape(const TriangleMesh& m
     storage->kind_ = kind;
     storage->margin_ = margin;
     CollisionShapeStorage::Impl& impl = *storage->impl_;
-    // A btGImpactMeshShape over the mesh (any closed mesh, convex or not), decimated to the budget.
-    const auto buildGImpactMesh = [&mesh, margin, &impl, &options] {
+    // A btGImpactMeshShape over the mesh (any closed mesh, convex or not), decimated to the budget
+    // and moved in by its margin, so that mesh + margin lies on the body's surface (MeshInset.h).
+    const auto buildGImpactMesh = [&mesh, &name, margin, &impl, &options] {
         const int budget = options.gimpactMaxTriangles;
         const bool decimate = budget > 0 && mesh.triangles.size() > static_cast<std::size_t>(budget);
-        const TriangleMesh coarse = decimate ? decimateMesh(mesh, budget) : TriangleMesh{};
-        const TriangleMesh& collided = decimate ? coarse : mesh;
+        const MeshInset inset = insetMesh(decimate ? decimateMesh(mesh, budget) : mesh, margin);
+        if (inset.reducedVertices > 0)
+            logf(LogLevel::Debug, name, ": ", inset.reducedVertices,
+                 " GImpact vertices in walls thinner than ", 2.0 * margin, " m moved in by as little as ",
+                 inset.smallestFraction, " of the margin");
+        const TriangleMesh& collided = inset.mesh;
         for (const auto& v : collided.vertices)
             impl.vertices.insert(impl.vertices.end(), {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())});
         for (const auto& t : collided.triangles) impl.indices.insert(impl.indices.end(), {t[0], t[1], t[2]});
