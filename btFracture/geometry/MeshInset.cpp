@@ -32,7 +32,8 @@ MeshInset insetMesh(const TriangleMesh& mesh, double distance) {
     const int n = static_cast<int>(mesh.vertices.size());
     for (const auto& t : mesh.triangles)
         for (int c : t)
-            if (c < 0 || c >= n) throw Error(name + ": triangle index " + std::to_string(c) + " out of range");
+            if (c < 0 || c >= n)
+                throw Error(name + ": triangle index " + std::to_string(c) + " out of range");
     MeshInset out;
     out.mesh = mesh;
     if (distance == 0.0 || mesh.triangles.empty()) return out;
