@@ -4,7 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode=${1:-check}
-mapfile -t files < <(git ls-files '*.h' '*.cpp')
+# Tracked and new (untracked, not ignored) files, so that a file is checked before it is added.
+mapfile -t files < <(git ls-files --cached --others --exclude-standard '*.h' '*.cpp')
 [ ${#files[@]} -gt 0 ] || exit 0
 if [ "$mode" = fix ]; then
   clang-format -i "${files[@]}"
