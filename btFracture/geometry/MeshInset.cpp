@@ -29,19 +29,15 @@ MeshInset insetMesh(const TriangleMesh& mesh, double distance) {
         out << name << ": inset distance " << distance << " m (need finite, >= 0)";
         throw Error(out.str());
     }
-    const int n = static_cast<int>(mesh.vertices.size());
-    for (const auto& t : mesh.triangles)
-        for (int c : t)
-            if (c < 0 || c >= n)
-                throw Error(name + ": triangle index " + std::to_string(c) + " out of range");
     MeshInset out;
     out.mesh = mesh;
     if (distance == 0.0 || mesh.triangles.empty()) return out;
+    const ClosestPointTree surface(mesh);  // throws on a triangle index out of range
 
-    // Per vertex: the normal equations of sum_f A_f (n_f . delta + d)^2.
+    // Per vertex: the normal equations of sum_f A_f (n_f . delta + d)^2 (trace: the vertex's area).
+    const int n = static_cast<int>(mesh.vertices.size());
     std::vector<Eigen::Matrix3d> normal(n, Eigen::Matrix3d::Zero());
     std::vector<Eigen::Vector3d> rhs(n, Eigen::Vector3d::Zero());
-    std::vector<double> area(n, 0.0);
     for (const auto& t : mesh.triangles) {
         const Eigen::Vector3d cross =
             (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
@@ -52,12 +48,10 @@ MeshInset insetMesh(const TriangleMesh& mesh, double distance) {
         for (int c : t) {
             normal[c] += a * nf * nf.transpose();
             rhs[c] -= a * distance * nf;
-            area[c] += a;
         }
     }
-    const ClosestPointTree surface(mesh);
     for (int v = 0; v < n; ++v) {
-        if (area[v] <= 0.0) continue;
+        if (normal[v].trace() <= 0.0) continue;
         // Least-squares move, the smallest one where the planes leave a direction free (pseudo-inverse).
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(normal[v]);
         const double largest = eigen.eigenvalues()(2);
@@ -85,7 +79,7 @@ MeshInset insetMesh(const TriangleMesh& mesh, double distance) {
             return 0.0;
         };
         // The depth the move reaches: d where the planes move by d, less where it was capped.
-        const double depth = std::min(distance, delta.norm());
+        double depth = std::min(distance, delta.norm());
         double scale = reach(delta, depth);
         // A spike or fin the planes' move cannot enter: along the inward normal instead.
         const Eigen::Vector3d inward = rhs[v].normalized() * distance;
@@ -93,10 +87,11 @@ MeshInset insetMesh(const TriangleMesh& mesh, double distance) {
             const double alongNormal = reach(inward, distance);
             if (alongNormal * distance > scale * depth) {
                 delta = inward;
+                depth = distance;
                 scale = alongNormal;
             }
         }
-        const double fraction = scale * std::min(distance, delta.norm()) / distance;
+        const double fraction = scale * depth / distance;
         out.mesh.vertices[v] = p + scale * delta;
         out.smallestFraction = std::min(out.smallestFraction, fraction);
         if (fraction < 0.99) ++out.reducedVertices;
