@@ -171,12 +171,10 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
     std::map<int, int> column;  // crack unknown -> local column
     for (int i = 0; i < static_cast<int>(unknowns.size()); ++i) column[unknowns[i]] = i;
     const bool withLoad = blocks == CouplingBlocks::SurfaceAndLoad;
-    CrackSurfaceCoupling out{Eigen::MatrixXd(),
+    // C accumulated in place (a row-major copy would hold it twice at thousands of unknowns).
+    CrackSurfaceCoupling out{Eigen::MatrixXd::Zero(3 * n, 3 * unknowns.size()),
                              Eigen::MatrixXd::Zero(withLoad ? 3 * unknowns.size() : 0, withLoad ? 3 * m : 0)};
-    // C accumulated row-major: each surface triangle adds to its three nodes' rows across all
-    // columns, which are then contiguous (column-major strides a row of C per entry).
-    using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-    RowMajorMatrix C = RowMajorMatrix::Zero(3 * n, 3 * unknowns.size());
+    Eigen::MatrixXd& C = out.C;
     const std::vector<BasisElement> support = basisElements(mesh, cracks, unknowns, cut, q);
     std::vector<std::vector<int>> columns(support.size());  // per element, per function: column of C
     for (std::size_t e = 0; e < support.size(); ++e)
@@ -240,7 +238,6 @@ CrackSurfaceCoupling assembleCoupling(const ElasticSolver& solver, const CrackMe
             }
         }
     }
-    out.C = C;
     return out;
 }
 
@@ -348,7 +345,7 @@ int CrackSystem::update() {
 
         // Surface-crack coupling of the redone unknowns: their columns of C, rows of G.
         Timer phase;
-        const CrackSurfaceCoupling coupling =
+        CrackSurfaceCoupling coupling =
             assembleCoupling(solver_, cracks_, redo, CouplingBlocks::SurfaceAndLoad, cut);
 
         // Crack-crack block D in the redone unknowns' columns (their rows follow by symmetry).
@@ -425,10 +422,12 @@ int CrackSystem::update() {
                 D_.middleRows(at, 3) = columns.middleCols(3 * i, 3).transpose();
             }
         }
+        coupling.G = Eigen::MatrixXd();  // in Gt_ now: freed before the factor grows
 
         // Schur complement columns S(:, redo) = D(:, redo) - C^T K_R^-1 K^T C_redo (unknown order).
         phase.restart();
         columns -= transposedProduct(C_, regularisedLoadSolve(coupling.C));
+        coupling.C = Eigen::MatrixXd();
         const double schurColumns = phase.seconds();
         phase.restart();
 
@@ -473,6 +472,7 @@ int CrackSystem::update() {
             }
         } else {
             growDense(denseSchur_(keptRows, keptRows));
+            denseSchur_.resize(0, 0);  // in `grown` now; a throw below empties the system anyway
             factor.truncate(first3);
             // Back to Cholesky after a change if the kept part allows it: not while the kept rows
             // still hold, unchanged, the block whose extension failed (a principal block of a
@@ -502,7 +502,7 @@ int CrackSystem::update() {
                 }
                 return smallest;
             };
-            BorderedLU lu = wasDense ? lu_ : BorderedLU();
+            BorderedLU lu = wasDense ? std::move(lu_) : BorderedLU();  // taken over, as the factor
             lu.truncate(first3);
             double rcond = factorFrom(lu, kLuBlock);
             if (!(rcond > kMinimumRcond && probeBackwardError(lu, grown) <= 1e-11)) {

@@ -3,6 +3,8 @@
 
 #include <btFracture/core/Error.h>
 
+#include <array>
+#include <mutex>
 #include <string>
 
 namespace btfracture {
@@ -31,19 +33,14 @@ const SauterSchwabRule& sauterSchwabRule(PairRelation relation, int n, bool swap
         throw Error("Sauter-Schwab rule with " + std::to_string(n) +
                     " points per axis requested; supported: 1.." + std::to_string(kMaxPoints) +
                     " for singular pairs");
-    // [relation][swapSymmetric][n]
-    static const auto tables = [] {
-        std::array<std::array<std::array<SauterSchwabRule, kMaxPoints + 1>, 2>, 3> all;
-        for (int r = 0; r < 3; ++r)
-            for (int k = 1; k <= kMaxPoints; ++k) {
-                all[r][0][k] = tabulate(static_cast<PairRelation>(r), k, false);
-                if (r == static_cast<int>(PairRelation::Identical))
-                    all[r][1][k] = tabulate(PairRelation::Identical, k, true);
-            }
-        return all;
-    }();
+    // [relation][swapSymmetric][n], each tabulated at its first use: all twelve sizes of the three
+    // relations hold about 40 MB, and a solver asks for two or three of them.
+    static std::array<std::array<std::array<SauterSchwabRule, kMaxPoints + 1>, 2>, 3> tables;
+    static std::array<std::array<std::array<std::once_flag, kMaxPoints + 1>, 2>, 3> tabulated;
     const bool merge = swapSymmetric && relation == PairRelation::Identical;
-    return tables[static_cast<int>(relation)][merge ? 1 : 0][n];
+    const int r = static_cast<int>(relation), m = merge ? 1 : 0;
+    std::call_once(tabulated[r][m][n], [&] { tables[r][m][n] = tabulate(relation, n, merge); });
+    return tables[r][m][n];
 }
 
 }  // namespace btfracture

@@ -64,7 +64,8 @@ void forEachSauterSchwabPoint(PairRelation relation, int n, Visit&& visit) {
                 }
 }
 
-// The same points, tabulated once per (relation, n) for 1 <= n <= 12: x1, x2, y1, y2, weight.
+// The same points, tabulated once per (relation, n) for 1 <= n <= 12 at its first use (thread
+// safe): x1, x2, y1, y2, weight.
 // With `swapSymmetric` the identical-panel rule merges each point pair with its x <-> y swap
 // (half the points), valid only for integrands symmetric under that swap.
 struct SauterSchwabRule {
