@@ -19,8 +19,8 @@ struct FrontFrame {
 };
 
 struct FrontSifs {
-    int node = -1;             // crack node on the front
-    Eigen::Vector3d position;  // [m], body frame
+    int node = -1;                                       // crack node on the front
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();  // [m], body frame
     FrontFrame frame;
     double KI = 0, KII = 0, KIII = 0;  // [Pa m^(1/2)]
     double spacing = 0;                // mean length of the adjacent front edges [m]
