@@ -59,11 +59,6 @@ double diameterOf(const Panel& p) {
                      (p.corners[0] - p.corners[2]).norm()});
 }
 
-// The separated rules' degrees by level (separatedRuleLevel).
-std::array<int, 4> levelDegrees(const QuadratureSettings& s) {
-    return {s.nearDegree, s.midDegree, s.farDegree, s.veryFarDegree};
-}
-
 Eigen::Vector3d centroidOf(const Panel& p) {
     return (p.corners[0] + p.corners[1] + p.corners[2]) / 3.0;
 }
@@ -78,11 +73,13 @@ bool coplanar(const Panel& x, const Panel& y) {
 }  // namespace
 
 int separatedRuleLevel(double eta, const QuadratureSettings& s) {
-    return eta < s.nearRatio ? 0 : eta < s.midRatio ? 1 : eta < s.farRatio ? 2 : 3;
+    int level = 0;
+    while (level < QuadratureSettings::kSeparatedLevels - 1 && eta >= s.levelRatios[level]) ++level;
+    return level;
 }
 
 int separatedRuleDegree(double eta, const QuadratureSettings& s) {
-    return levelDegrees(s)[separatedRuleLevel(eta, s)];
+    return s.levelDegrees[separatedRuleLevel(eta, s)];
 }
 
 PanelPoints::PanelPoints(const Panel& panel, int degree) {
@@ -267,21 +264,114 @@ PairIntegrals integrateSingular(const Panel& x, const Panel& y, const Quadrature
 
 QuadraturePanel::QuadraturePanel(const Panel& p, const QuadratureSettings& s)
     : panel(p), centroid(centroidOf(p)), diameter(diameterOf(p)) {
-    const std::array<int, 4> degrees = levelDegrees(s);
-    for (int level = 0; level < 4; ++level) points[level] = PanelPoints(p, degrees[level]);
+    for (int level = 0; level < QuadratureSettings::kSeparatedLevels; ++level)
+        points[level] = PanelPoints(p, s.levelDegrees[level]);
 }
+
+namespace {
+
+// A triangle inside a panel: its corners and each corner's barycentric coordinates in the panel
+// (the panel's hat values there).
+struct SubPanel {
+    std::array<Eigen::Vector3d, 3> corners;
+    std::array<Eigen::Vector3d, 3> hats;
+    double area, diameter;
+    Eigen::Vector3d centroid;
+};
+
+SubPanel subPanel(const std::array<Eigen::Vector3d, 3>& corners, const std::array<Eigen::Vector3d, 3>& hats) {
+    const double diameter = std::max({(corners[1] - corners[0]).norm(), (corners[2] - corners[1]).norm(),
+                                      (corners[0] - corners[2]).norm()});
+    return {corners, hats, 0.5 * (corners[1] - corners[0]).cross(corners[2] - corners[0]).norm(), diameter,
+            (corners[0] + corners[1] + corners[2]) / 3.0};
+}
+
+SubPanel wholePanel(const Panel& p) {
+    return subPanel(p.corners,
+                    {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()});
+}
+
+// The four triangles of the midpoint split.
+std::array<SubPanel, 4> quarters(const SubPanel& s) {
+    const auto& c = s.corners;
+    const auto& h = s.hats;
+    const std::array<Eigen::Vector3d, 3> mc = {0.5 * (c[0] + c[1]), 0.5 * (c[1] + c[2]), 0.5 * (c[2] + c[0])};
+    const std::array<Eigen::Vector3d, 3> mh = {0.5 * (h[0] + h[1]), 0.5 * (h[1] + h[2]), 0.5 * (h[2] + h[0])};
+    return {subPanel({c[0], mc[0], mc[2]}, {h[0], mh[0], mh[2]}),
+            subPanel({mc[0], c[1], mc[1]}, {mh[0], h[1], mh[1]}),
+            subPanel({mc[2], mc[1], c[2]}, {mh[2], mh[1], h[2]}),
+            subPanel({mc[0], mc[1], mc[2]}, {mh[0], mh[1], mh[2]})};
+}
+
+double etaOf(const SubPanel& x, const SubPanel& y) {
+    return (x.centroid - y.centroid).norm() / std::max(x.diameter, y.diameter);
+}
+
+// The pair's integrals as a sum over sub-pairs: the nearest sub-pair below subPairRatio has its
+// larger triangle split (first of equals: deterministic) while the count stays within
+// maxSubPairs; each sub-pair then takes its own level's rule.
+void addSubdivided(const SubPanel& x, const SubPanel& y, const QuadratureSettings& s, Accumulator& acc) {
+    std::vector<std::pair<SubPanel, SubPanel>> pairs{{x, y}};
+    while (static_cast<int>(pairs.size()) + 3 <= s.maxSubPairs) {
+        int nearest = -1;
+        double nearestEta = s.subPairRatio;
+        for (int i = 0; i < static_cast<int>(pairs.size()); ++i) {
+            const double eta = etaOf(pairs[i].first, pairs[i].second);
+            if (eta < nearestEta) {
+                nearest = i;
+                nearestEta = eta;
+            }
+        }
+        if (nearest < 0) break;
+        const auto [a, b] = pairs[nearest];
+        const bool splitA = a.diameter >= b.diameter;
+        const std::array<SubPanel, 4> children = quarters(splitA ? a : b);
+        pairs[nearest] = splitA ? std::make_pair(children[0], b) : std::make_pair(a, children[0]);
+        for (int c = 1; c < 4; ++c)
+            pairs.push_back(splitA ? std::make_pair(children[c], b) : std::make_pair(a, children[c]));
+    }
+    for (const auto& [a, b] : pairs) {
+        const TriangleRule& rule = triangleRule(separatedRuleDegree(etaOf(a, b), s));
+        for (const auto& p : rule.points) {
+            double xp[3], phiX[3];
+            for (int k = 0; k < 3; ++k) {
+                xp[k] = p.l0 * a.corners[0][k] + p.l1 * a.corners[1][k] + p.l2 * a.corners[2][k];
+                phiX[k] = p.l0 * a.hats[0][k] + p.l1 * a.hats[1][k] + p.l2 * a.hats[2][k];
+            }
+            for (const auto& q : rule.points) {
+                double yp[3], phiY[3];
+                for (int k = 0; k < 3; ++k) {
+                    yp[k] = q.l0 * b.corners[0][k] + q.l1 * b.corners[1][k] + q.l2 * b.corners[2][k];
+                    phiY[k] = q.l0 * b.hats[0][k] + q.l1 * b.hats[1][k] + q.l2 * b.hats[2][k];
+                }
+                acc.add(xp, yp, phiX, phiY, p.w * a.area * q.w * b.area);
+            }
+        }
+    }
+}
+
+PairIntegrals integrateSubdivided(const Panel& x, const Panel& y, const QuadratureSettings& s,
+                                  bool doubleLayer) {
+    Accumulator acc{x.normal, y.normal, doubleLayer, {}};
+    addSubdivided(wholePanel(x), wholePanel(y), s, acc);
+    return acc.result();
+}
+
+}  // namespace
 
 PairIntegrals integratePair(const Panel& x, const Panel& y, const QuadratureSettings& settings) {
     if (relationOf(x, y) != PairRelation::Separated) return integrateSingular(x, y, settings);
-    const int degree = separatedRuleDegree(
-        (centroidOf(x) - centroidOf(y)).norm() / std::max(diameterOf(x), diameterOf(y)), settings);
+    const double eta = (centroidOf(x) - centroidOf(y)).norm() / std::max(diameterOf(x), diameterOf(y));
+    if (eta < settings.subdivisionRatio) return integrateSubdivided(x, y, settings, true);
+    const int degree = separatedRuleDegree(eta, settings);
     return integrateSeparated(x, PanelPoints(x, degree), y, PanelPoints(y, degree));
 }
 
 PairIntegrals integrateSeparated(const QuadraturePanel& x, const QuadraturePanel& y,
                                  const QuadratureSettings& settings, bool doubleLayer) {
-    const int level =
-        separatedRuleLevel((x.centroid - y.centroid).norm() / std::max(x.diameter, y.diameter), settings);
+    const double eta = (x.centroid - y.centroid).norm() / std::max(x.diameter, y.diameter);
+    if (eta < settings.subdivisionRatio) return integrateSubdivided(x.panel, y.panel, settings, doubleLayer);
+    const int level = separatedRuleLevel(eta, settings);
     return integrateSeparated(x.panel, x.points[level], y.panel, y.points[level], doubleLayer);
 }
 

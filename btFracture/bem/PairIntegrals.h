@@ -38,19 +38,26 @@ struct QuadratureSettings {
     int identicalPoints = 6;
     int edgePoints = 5;
     int vertexPoints = 5;
-    // Regular pairs: rule degree per triangle chosen by distance / size ratio eta.
-    double nearRatio = 1.5;  // eta below this: `nearDegree`
-    double midRatio = 3.0;   // below this: `midDegree`
-    double farRatio = 6.0;   // below this: `farDegree`, beyond: `veryFarDegree`
-    int nearDegree = 8;
-    int midDegree = 5;
-    int farDegree = 4;
-    int veryFarDegree = 2;
+    // Regular (separated) pairs: the triangle rule's degree by level, the level by the pair's
+    // centroid distance / larger diameter eta: level i while eta < levelRatios[i], the last level
+    // beyond. Each boundary keeps the worst relative error of the r r^T / r^3 integral near 1e-4
+    // (the 1/r and double-layer integrals' lower): degree 8 (16 points) below 1.5, 5 (7 points)
+    // 2.7e-4 at 1.5, 4 (6 points) 8e-5 at 2, 3 (4 points) 1e-4 at 4, 2 (3 points) 7e-5 at 6.
+    // Nearly touching pairs (eta below subdivisionRatio: a crack element whose corner lies on a
+    // surface triangle without sharing its node) split the larger triangle of their nearest
+    // sub-pair in four, again and again, until every sub-pair reaches subPairRatio or there are
+    // maxSubPairs sub-pairs (bounding the work where two triangles cross or overlap).
+    double subdivisionRatio = 0.5;
+    double subPairRatio = 1.0;
+    int maxSubPairs = 64;
+    static constexpr int kSeparatedLevels = 5;
+    std::array<double, kSeparatedLevels - 1> levelRatios = {1.5, 3.0, 6.0, 6.0};
+    std::array<int, kSeparatedLevels> levelDegrees = {8, 5, 4, 2, 2};
 };
 
 PairRelation relationOf(const Panel& x, const Panel& y);
 
-// Level (0 near, 1 mid, 2 far, 3 very far) and degree of the triangle rule for a separated pair
+// Level (QuadratureSettings::levelRatios) and degree of the triangle rule for a separated pair
 // whose centroid distance is eta times the larger panel diameter.
 int separatedRuleLevel(double eta, const QuadratureSettings& settings);
 int separatedRuleDegree(double eta, const QuadratureSettings& settings);
@@ -77,7 +84,7 @@ struct QuadraturePanel {
     Panel panel;
     Eigen::Vector3d centroid;
     double diameter;
-    std::array<PanelPoints, 4> points;  // by separatedRuleLevel
+    std::array<PanelPoints, QuadratureSettings::kSeparatedLevels> points;  // by separatedRuleLevel
 };
 // Identical, edge- or vertex-adjacent pair by Sauter-Schwab quadrature (without `doubleLayer`
 // the double-layer integrals are left zero).

@@ -48,6 +48,17 @@ void addOrbit3(TriangleRule& rule, double a, double w) {  // (a, b, b) and permu
     rule.points.push_back({b, b, a, w});
 }
 
+// (a, b, c) and its five other permutations, c = 1 - a - b.
+void addOrbit6(TriangleRule& rule, double a, double b, double w) {
+    const double c = 1.0 - a - b;
+    rule.points.push_back({a, b, c, w});
+    rule.points.push_back({a, c, b, w});
+    rule.points.push_back({b, a, c, w});
+    rule.points.push_back({b, c, a, w});
+    rule.points.push_back({c, a, b, w});
+    rule.points.push_back({c, b, a, w});
+}
+
 TriangleRule makeTriangleRule(int degree) {
     TriangleRule rule;
     if (degree <= 1) {
@@ -56,7 +67,11 @@ TriangleRule makeTriangleRule(int degree) {
     } else if (degree == 2) {
         addOrbit3(rule, 2.0 / 3.0, 1.0 / 3.0);
         rule.degree = 2;
-    } else if (degree <= 4) {  // Dunavant's 6-point rule
+    } else if (degree == 3) {  // Strang and Fix's 4-point rule (one negative weight)
+        rule.points.push_back({1.0 / 3, 1.0 / 3, 1.0 / 3, -27.0 / 48.0});
+        addOrbit3(rule, 0.6, 25.0 / 48.0);
+        rule.degree = 3;
+    } else if (degree == 4) {  // Dunavant's 6-point rule
         addOrbit3(rule, 0.108103018168070, 0.223381589678011);
         addOrbit3(rule, 0.816847572980459, 0.109951743655322);
         rule.degree = 4;
@@ -65,6 +80,18 @@ TriangleRule makeTriangleRule(int degree) {
         addOrbit3(rule, 0.059715871789770, 0.132394152788506);
         addOrbit3(rule, 0.797426985353087, 0.125939180544827);
         rule.degree = 5;
+    } else if (degree == 6) {  // Dunavant's 12-point rule
+        addOrbit3(rule, 0.501426509658179, 0.116786275726379);
+        addOrbit3(rule, 0.873821971016996, 0.050844906370207);
+        addOrbit6(rule, 0.053145049844817, 0.310352451033784, 0.082851075618374);
+        rule.degree = 6;
+    } else if (degree <= 8) {  // Dunavant's 16-point rule
+        rule.points.push_back({1.0 / 3, 1.0 / 3, 1.0 / 3, 0.144315607677787});
+        addOrbit3(rule, 0.081414823414554, 0.095091634267285);
+        addOrbit3(rule, 0.658861384496480, 0.103217370534718);
+        addOrbit3(rule, 0.898905543365938, 0.032458497623198);
+        addOrbit6(rule, 0.008394777409958, 0.263112829634638, 0.027230314174435);
+        rule.degree = 8;
     } else {
         // Conical product: x1 = u, x2 = u v on {0 <= x2 <= x1 <= 1}, Jacobian u; n points per
         // direction integrate degree 2n - 2 in (x1, x2) exactly (the Jacobian adds one in u).

@@ -650,9 +650,11 @@ TEST(FractureSolver, SeedsInAThinWallAreHalvedToFit) {
     double fullRadius = 0.0;
     for (int t = 0; t < m.triangleCount(); ++t)
         fullRadius = std::max(fullRadius, FractureSettings().seedRadius * m.diameter(t));
-    // EST's one-ring hexagon inside (1.05 r + r across the 8 mm wall) fits at a quarter of the full
-    // seed at most, FULL's two-ring half-hexagon on a face (r across it, surfaceSeeds) at a half:
-    // edges of r / rings, a quarter of the full seed's radius at most either way.
+    // EST's one-ring hexagon inside (1.05 r + r across the 8 mm wall, edges r) fits at a quarter
+    // of the full seed at most, FULL's two-ring half-disc on a face (r across it, surfaceSeeds;
+    // outer edges 2 sin(18 deg) r = 0.62 r) at a half: edges of 0.31 of the full seed's radius at
+    // most either way, 0.5 and 0.62 unhalved. Which face gets a seed follows the rounding (the
+    // stress is uniform), so the bound holds on every face.
     for (const FractureMethod method : {FractureMethod::Estimated, FractureMethod::Full}) {
         FractureSettings fs;
         fs.method = method;
@@ -669,8 +671,9 @@ TEST(FractureSolver, SeedsInAThinWallAreHalvedToFit) {
         }
         for (int t = 0; t < cracks.triangleCount(); ++t) {
             const auto& tri = cracks.triangle(t);
-            EXPECT_LE((cracks.node(tri[1]) - cracks.node(tri[2])).norm(), 0.26 * fullRadius)
-                << toString(method);
+            for (int k = 0; k < 3; ++k)
+                EXPECT_LE((cracks.node(tri[k]) - cracks.node(tri[(k + 1) % 3])).norm(), 0.35 * fullRadius)
+                    << toString(method);
         }
     }
 }
