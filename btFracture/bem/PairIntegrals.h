@@ -40,9 +40,9 @@ struct QuadratureSettings {
     int vertexPoints = 5;
     // Regular (separated) pairs: the triangle rule's degree by level, the level by the pair's
     // centroid distance / larger diameter eta: level i while eta < levelRatios[i], the last level
-    // beyond. Each boundary keeps the worst relative error of the r r^T / r^3 integral near 1e-4
+    // beyond. Worst relative error of the r r^T / r^3 integral at each boundary against degree 20
     // (the 1/r and double-layer integrals' lower): degree 8 (16 points) below 1.5, 5 (7 points)
-    // 2.7e-4 at 1.5, 4 (6 points) 8e-5 at 2, 3 (4 points) 1e-4 at 4, 2 (3 points) 7e-5 at 6.
+    // 2.7e-4 at 1.5, 4 (6 points) 1e-5 at 3, 2 (3 points) 7e-5 at 6.
     // Nearly touching pairs (eta below subdivisionRatio: a crack element whose corner lies on a
     // surface triangle without sharing its node) split the larger triangle of their nearest
     // sub-pair in four, again and again, until every sub-pair reaches subPairRatio or there are
@@ -50,9 +50,9 @@ struct QuadratureSettings {
     double subdivisionRatio = 0.5;
     double subPairRatio = 1.0;
     int maxSubPairs = 64;
-    static constexpr int kSeparatedLevels = 5;
-    std::array<double, kSeparatedLevels - 1> levelRatios = {1.5, 3.0, 6.0, 6.0};
-    std::array<int, kSeparatedLevels> levelDegrees = {8, 5, 4, 2, 2};
+    static constexpr int kSeparatedLevels = 4;
+    std::array<double, kSeparatedLevels - 1> levelRatios = {1.5, 3.0, 6.0};
+    std::array<int, kSeparatedLevels> levelDegrees = {8, 5, 4, 2};
 };
 
 PairRelation relationOf(const Panel& x, const Panel& y);

@@ -67,11 +67,7 @@ TriangleRule makeTriangleRule(int degree) {
     } else if (degree == 2) {
         addOrbit3(rule, 2.0 / 3.0, 1.0 / 3.0);
         rule.degree = 2;
-    } else if (degree == 3) {  // Strang and Fix's 4-point rule (one negative weight)
-        rule.points.push_back({1.0 / 3, 1.0 / 3, 1.0 / 3, -27.0 / 48.0});
-        addOrbit3(rule, 0.6, 25.0 / 48.0);
-        rule.degree = 3;
-    } else if (degree == 4) {  // Dunavant's 6-point rule
+    } else if (degree <= 4) {  // Dunavant's 6-point rule
         addOrbit3(rule, 0.108103018168070, 0.223381589678011);
         addOrbit3(rule, 0.816847572980459, 0.109951743655322);
         rule.degree = 4;

@@ -23,7 +23,7 @@ struct TriangleRule {
 const LineRule& gaussLegendre(int n);
 
 // Smallest cached rule exact for the given polynomial degree (1..30): symmetric rules up to
-// degree 8 (Strang-Fix, Dunavant 1985; 1, 3, 4, 6, 7, 12, 16, 16 points), collapsed Gauss
+// degree 8 (Dunavant 1985; 1, 3, 6, 6, 7, 12, 16, 16 points), collapsed Gauss
 // (Stroud conical product) beyond.
 const TriangleRule& triangleRule(int degree);
 
