@@ -54,17 +54,24 @@ struct Accumulator {
     double dyadic[6] = {0, 0, 0, 0, 0, 0};
 };
 
-double diameterOf(const Panel& p) {
-    return std::max({(p.corners[1] - p.corners[0]).norm(), (p.corners[2] - p.corners[1]).norm(),
-                     (p.corners[0] - p.corners[2]).norm()});
+using Corners = std::array<Eigen::Vector3d, 3>;
+
+double diameterOf(const Corners& c) {
+    return std::max({(c[1] - c[0]).norm(), (c[2] - c[1]).norm(), (c[0] - c[2]).norm()});
 }
 
-Eigen::Vector3d centroidOf(const Panel& p) {
-    return (p.corners[0] + p.corners[1] + p.corners[2]) / 3.0;
+Eigen::Vector3d centroidOf(const Corners& c) {
+    return (c[0] + c[1] + c[2]) / 3.0;
+}
+
+// Centroid distance over the larger diameter: the ratio that picks a separated pair's rule.
+double separationRatio(const Eigen::Vector3d& centroidX, double diameterX, const Eigen::Vector3d& centroidY,
+                       double diameterY) {
+    return (centroidX - centroidY).norm() / std::max(diameterX, diameterY);
 }
 
 bool coplanar(const Panel& x, const Panel& y) {
-    const double scale = std::max(diameterOf(x), diameterOf(y));
+    const double scale = std::max(diameterOf(x.corners), diameterOf(y.corners));
     for (const auto& c : y.corners)
         if (std::abs((c - x.corners[0]).dot(x.normal)) > 1e-12 * scale) return false;
     return std::abs(x.normal.dot(y.normal)) > 1.0 - 1e-14;
@@ -263,7 +270,7 @@ PairIntegrals integrateSingular(const Panel& x, const Panel& y, const Quadrature
 }
 
 QuadraturePanel::QuadraturePanel(const Panel& p, const QuadratureSettings& s)
-    : panel(p), centroid(centroidOf(p)), diameter(diameterOf(p)) {
+    : panel(p), centroid(centroidOf(p.corners)), diameter(diameterOf(p.corners)) {
     for (int level = 0; level < QuadratureSettings::kSeparatedLevels; ++level)
         points[level] = PanelPoints(p, s.levelDegrees[level]);
 }
@@ -273,17 +280,15 @@ namespace {
 // A triangle inside a panel: its corners and each corner's barycentric coordinates in the panel
 // (the panel's hat values there).
 struct SubPanel {
-    std::array<Eigen::Vector3d, 3> corners;
-    std::array<Eigen::Vector3d, 3> hats;
+    Corners corners;
+    Corners hats;
     double area, diameter;
     Eigen::Vector3d centroid;
 };
 
-SubPanel subPanel(const std::array<Eigen::Vector3d, 3>& corners, const std::array<Eigen::Vector3d, 3>& hats) {
-    const double diameter = std::max({(corners[1] - corners[0]).norm(), (corners[2] - corners[1]).norm(),
-                                      (corners[0] - corners[2]).norm()});
-    return {corners, hats, 0.5 * (corners[1] - corners[0]).cross(corners[2] - corners[0]).norm(), diameter,
-            (corners[0] + corners[1] + corners[2]) / 3.0};
+SubPanel subPanel(const Corners& corners, const Corners& hats) {
+    return {corners, hats, 0.5 * (corners[1] - corners[0]).cross(corners[2] - corners[0]).norm(),
+            diameterOf(corners), centroidOf(corners)};
 }
 
 SubPanel wholePanel(const Panel& p) {
@@ -295,8 +300,8 @@ SubPanel wholePanel(const Panel& p) {
 std::array<SubPanel, 4> quarters(const SubPanel& s) {
     const auto& c = s.corners;
     const auto& h = s.hats;
-    const std::array<Eigen::Vector3d, 3> mc = {0.5 * (c[0] + c[1]), 0.5 * (c[1] + c[2]), 0.5 * (c[2] + c[0])};
-    const std::array<Eigen::Vector3d, 3> mh = {0.5 * (h[0] + h[1]), 0.5 * (h[1] + h[2]), 0.5 * (h[2] + h[0])};
+    const Corners mc = {0.5 * (c[0] + c[1]), 0.5 * (c[1] + c[2]), 0.5 * (c[2] + c[0])};
+    const Corners mh = {0.5 * (h[0] + h[1]), 0.5 * (h[1] + h[2]), 0.5 * (h[2] + h[0])};
     return {subPanel({c[0], mc[0], mc[2]}, {h[0], mh[0], mh[2]}),
             subPanel({mc[0], c[1], mc[1]}, {mh[0], h[1], mh[1]}),
             subPanel({mc[2], mc[1], c[2]}, {mh[2], mh[1], h[2]}),
@@ -304,7 +309,7 @@ std::array<SubPanel, 4> quarters(const SubPanel& s) {
 }
 
 double etaOf(const SubPanel& x, const SubPanel& y) {
-    return (x.centroid - y.centroid).norm() / std::max(x.diameter, y.diameter);
+    return separationRatio(x.centroid, x.diameter, y.centroid, y.diameter);
 }
 
 // The pair's integrals as a sum over sub-pairs: the nearest sub-pair below subPairRatio has its
@@ -361,7 +366,8 @@ PairIntegrals integrateSubdivided(const Panel& x, const Panel& y, const Quadratu
 
 PairIntegrals integratePair(const Panel& x, const Panel& y, const QuadratureSettings& settings) {
     if (relationOf(x, y) != PairRelation::Separated) return integrateSingular(x, y, settings);
-    const double eta = (centroidOf(x) - centroidOf(y)).norm() / std::max(diameterOf(x), diameterOf(y));
+    const double eta = separationRatio(centroidOf(x.corners), diameterOf(x.corners), centroidOf(y.corners),
+                                       diameterOf(y.corners));
     if (eta < settings.subdivisionRatio) return integrateSubdivided(x, y, settings, true);
     const int degree = separatedRuleDegree(eta, settings);
     return integrateSeparated(x, PanelPoints(x, degree), y, PanelPoints(y, degree));
@@ -369,7 +375,7 @@ PairIntegrals integratePair(const Panel& x, const Panel& y, const QuadratureSett
 
 PairIntegrals integrateSeparated(const QuadraturePanel& x, const QuadraturePanel& y,
                                  const QuadratureSettings& settings, bool doubleLayer) {
-    const double eta = (x.centroid - y.centroid).norm() / std::max(x.diameter, y.diameter);
+    const double eta = separationRatio(x.centroid, x.diameter, y.centroid, y.diameter);
     if (eta < settings.subdivisionRatio) return integrateSubdivided(x.panel, y.panel, settings, doubleLayer);
     const int level = separatedRuleLevel(eta, settings);
     return integrateSeparated(x.panel, x.points[level], y.panel, y.points[level], doubleLayer);
