@@ -5,7 +5,9 @@
 #include <BulletCollision/CollisionDispatch/btCollisionObject.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
 #include <BulletCollision/CollisionShapes/btConvexShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 
 #include <cfloat>
 #include <utility>
@@ -22,6 +24,30 @@ btScalar gapAlong(const btCollisionObjectWrapper& a, const btCollisionObjectWrap
     const btVector3 lowA = ta(shapeA->localGetSupportingVertex(-n * ta.getBasis()));
     const btVector3 highB = tb(shapeB->localGetSupportingVertex(n * tb.getBasis()));
     return lowA.dot(n) - highB.dot(n);
+}
+
+// GJK's separating axis (from b to a, not normalised), started from `start` and stopped as soon
+// as the shapes are proven more than `limit` apart along it (margins included) or it converged.
+// Only a direction: the gap along it is measured again from support points.
+btVector3 gjkAxis(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b, btScalar limit,
+                  const btVector3& start) {
+    const auto* shapeA = static_cast<const btConvexShape*>(a.getCollisionShape());
+    const auto* shapeB = static_cast<const btConvexShape*>(b.getCollisionShape());
+    struct Ignored : btDiscreteCollisionDetectorInterface::Result {
+        void setShapeIdentifiersA(int, int) override {}
+        void setShapeIdentifiersB(int, int) override {}
+        void addContactPoint(const btVector3&, const btVector3&, btScalar) override {}
+    } ignored;
+    btVoronoiSimplexSolver simplex;
+    btGjkPairDetector gjk(shapeA, shapeB, &simplex, nullptr);  // no penetration solver: apart only
+    if (start.length2() > SIMD_EPSILON) gjk.setCachedSeparatingAxis(start);
+    btGjkPairDetector::ClosestPointInput input;
+    input.m_transformA = a.getWorldTransform();
+    input.m_transformB = b.getWorldTransform();
+    const btScalar reach = limit + shapeA->getMargin() + shapeB->getMargin();
+    input.m_maximumDistanceSquared = reach * reach;
+    gjk.getClosestPoints(input, ignored, nullptr);
+    return gjk.getCachedSeparatingAxis();
 }
 
 btScalar boundingRadius(const btCollisionObjectWrapper& w) {
@@ -92,9 +118,18 @@ bool SeparatedPairCache::apart(const btCollisionObjectWrapper& a, const btCollis
         const btScalar gap = gapAlong(a, b, last);
         if (gap > bestGap) bestGap = gap, best = last;
     }
+    const btScalar bound = limit + slack(a, b, radiusA, radiusB);
+    if (!(bestGap > bound)) {
+        const btVector3 axis = gjkAxis(a, b, bound, best);
+        if (axis.length2() > SIMD_EPSILON) {
+            const btVector3 unit = axis.normalized();
+            const btScalar gap = gapAlong(a, b, unit);
+            if (gap > bestGap) bestGap = gap, best = unit;
+        }
+    }
     bodyA_ = a.getCollisionObject();
     axis_ = best;
-    valid_ = bestGap > limit + slack(a, b, radiusA, radiusB);
+    valid_ = bestGap > bound;
     if (!valid_) return false;
     gap_ = bestGap;
     originA_ = a.getWorldTransform().getOrigin();

@@ -30,7 +30,8 @@ public:
     // the bodies' broadphase boxes leave (Bullet widens them by gContactBreakingThreshold); then
     // the bound from the last measurement; when that no longer holds, the gap is measured again
     // at the current transforms, along the last axis and along the line between the bodies'
-    // origins. Convex shapes only.
+    // origins, and when neither clears the threshold, along GJK's separating axis. Convex shapes
+    // only.
     bool apart(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b,
                const btPersistentManifold& manifold, btScalar reach = 0);
 

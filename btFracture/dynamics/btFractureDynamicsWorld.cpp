@@ -597,7 +597,9 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
         Event event{body, {}, {}, {}, {}, {}, {}, 0.0};
         Timer timer;
         try {
-            if (!buildContacts(*body, contacts)) continue;
+            const bool touching = buildContacts(*body, contacts);
+            stats_.contactSeconds += timer.seconds();
+            if (!touching) continue;
             event.info.step = stats_.steps;
             event.info.contacts = static_cast<int>(contacts.size());
             event.info.impulseSum = body->impulseSum_;

@@ -62,9 +62,10 @@ struct CountingConfiguration : btDefaultCollisionConfiguration {
     }
 };
 
-// Two 0.2 m cubes (convex hulls) turned by `angle` about z, face to face along the face normal
-// (cos angle, sin angle, 0), their faces `gap` apart. At 45 degrees (the default) their bounding
-// boxes overlap while the faces are up to 8 cm apart; at 0 the boxes fit the cubes.
+// Two boxes (convex hulls, 0.2 m cubes by default) turned by `angle` about z, face to face along
+// the face normal (cos angle, sin angle, 0), their faces `gap` apart, the second shifted by
+// `offset` along the face (along (-sin angle, cos angle, 0)). At 45 degrees (the default) their
+// bounding boxes overlap while the faces are up to 8 cm apart; at 0 the boxes fit the cubes.
 struct FacingCubes {
     CountingConfiguration config;
     btCollisionDispatcher dispatcher{&config};
@@ -76,15 +77,19 @@ struct FacingCubes {
     const btQuaternion turned;
     const btVector3 normal;
 
-    FacingCubes(bool withCache, float gap, float angle = SIMD_PI * 0.25f)
+    FacingCubes(bool withCache, float gap, float angle = SIMD_PI * 0.25f,
+                const btVector3& halfExtents = btVector3(0.1f, 0.1f, 0.1f), float offset = 0.0f)
         : turned(btVector3(0, 0, 1), angle), normal(std::cos(angle), std::sin(angle), 0.0f) {
         for (int k = 0; k < 8; ++k)
-            shape.addPoint(btVector3(k & 1 ? 0.1f : -0.1f, k & 2 ? 0.1f : -0.1f, k & 4 ? 0.1f : -0.1f));
+            shape.addPoint(btVector3(k & 1 ? halfExtents.x() : -halfExtents.x(),
+                                     k & 2 ? halfExtents.y() : -halfExtents.y(),
+                                     k & 4 ? halfExtents.z() : -halfExtents.z()));
         shape.setMargin(0.0f);
         shape.recalcLocalAabb();  // the box cached by addPoint holds Bullet's default margin
         if (withCache) separated.emplace(dispatcher, config);
         place(a, btVector3(0, 0, 0));
-        place(b, normal * (0.2f + gap));
+        const btVector3 side(-normal.y(), normal.x(), 0.0f);
+        place(b, normal * (2.0f * halfExtents.x() + gap) + side * offset);
     }
     ~FacingCubes() {
         world.removeCollisionObject(&b);
@@ -167,6 +172,30 @@ TEST(SeparatedConvexPairs, ApproachingPairGetsItsContactOnTheSamePass) {
                                    << ")";
         EXPECT_LT(cached.config.counting.calls, plain.config.counting.calls);
     }
+}
+
+// Two 1 m long, 2 cm thick plates face to face 3 cm apart, shifted by 0.9 m along their length:
+// the line between their centres runs almost along the plates (the gap along it is negative) and
+// their turned bounding boxes overlap, so only GJK's axis, the faces' normal, shows the pair
+// apart. Approaching at 2 mm a pass: the contact on the same pass, with the same points bit for
+// bit, as without the cache, and Bullet's algorithm skipped on the passes before it.
+TEST(SeparatedConvexPairs, OffsetPlatesSkippedAlongGjksAxisUntilTheirContact) {
+    const btVector3 plate(0.01f, 0.5f, 0.1f);
+    FacingCubes plain(false, 0.03f, SIMD_PI * 0.25f, plate, 0.9f);
+    FacingCubes cached(true, 0.03f, SIMD_PI * 0.25f, plate, 0.9f);
+    int firstContact = -1;
+    for (int pass = 0; pass < 20; ++pass) {
+        const std::vector<btManifoldPoint> want = plain.pass();
+        expectSamePoints(cached.pass(), want, pass);
+        if (pass == 0) {
+            ASSERT_EQ(cached.pairs(), 1) << "the broadphase leaves must overlap";
+        }
+        if (firstContact < 0 && !want.empty()) firstContact = pass;
+        plain.move(-0.002f, 0.0f);
+        cached.move(-0.002f, 0.0f);
+    }
+    EXPECT_GE(firstContact, 10) << "the plates must start apart for several passes";
+    EXPECT_LE(cached.config.counting.calls, plain.config.counting.calls - firstContact + 3);
 }
 
 // Aligned cubes 10 cm apart: the broadphase boxes (widened by gContactBreakingThreshold, 2 cm)
