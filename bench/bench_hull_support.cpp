@@ -6,14 +6,18 @@
 //  - coherent: each direction turned by about 0.05 rad from the last (GJK's iterations, one
 //    pair's queries from step to step);
 //  - alternating: two coherent streams interleaved, one near +d and one near -d (a fragment
-//    in contact with two others, resting on the ground and touched from above).
+//    in contact with two others, resting on the ground and touched from above);
+//  - heap: 600 hulls of 150 corners (sizes 0.2-1), each query on a hull picked at random with
+//    that hull's own coherent stream: a heap of chips, whose corners are not in cache.
 // Each stream runs five times; the fastest run counts. Prints
 // METRIC hull_support_ns_<stream>_<corners> (graph walk) and
-// METRIC hull_scan_ns_<stream>_<corners> (Bullet's scan), both in ns per query.
+// METRIC hull_scan_ns_<stream>_<corners> (Bullet's scan), both in ns per query, and
+// METRIC hull_support_ns_heap_600x150 / hull_scan_ns_heap_600x150.
 //
 // Usage: bench_hull_support [--queries N] [--stream NAME] [--corners N]
 //   --queries N   queries per stream and hull (default 200,000)
-//   --stream NAME only this stream; --corners N: only the hull of N corners (at least 24)
+//   --stream NAME only this stream; --corners N: only the hull of N corners (at least 24);
+//                 either one leaves out the heap
 #include <btFracture/core/Timer.h>
 #include <btFracture/dynamics/GraphHullShape.h>
 
@@ -23,6 +27,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -79,6 +84,48 @@ double nsPerQuery(const btConvexHullShape& shape, const std::vector<btVector3>& 
     return fastest * 1e9 / double(directions.size());
 }
 
+struct HeapQuery {
+    int hull;
+    btVector3 direction;
+};
+
+// The heap's query stream: a random hull per query, each hull's directions coherent.
+std::vector<HeapQuery> heapStream(int hulls, int count, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> normal;
+    std::uniform_int_distribution<int> pick(0, hulls - 1);
+    auto gaussian = [&] {
+        return btVector3(btScalar(normal(rng)), btScalar(normal(rng)), btScalar(normal(rng)));
+    };
+    std::vector<btVector3> current;
+    for (int h = 0; h < hulls; ++h) current.push_back(gaussian().normalized());
+    std::vector<HeapQuery> queries;
+    for (int i = 0; i < count; ++i) {
+        const int h = pick(rng);
+        current[static_cast<std::size_t>(h)] =
+            (current[static_cast<std::size_t>(h)] + btScalar(0.05) * gaussian()).normalized();
+        queries.push_back({h, current[static_cast<std::size_t>(h)]});
+    }
+    return queries;
+}
+
+// As nsPerQuery, over a heap of shapes.
+template <class Shape>
+double nsPerHeapQuery(const std::vector<std::unique_ptr<Shape>>& shapes,
+                      const std::vector<HeapQuery>& queries, double& checksum) {
+    double fastest = 1e30;
+    for (int pass = 0; pass < 5; ++pass) {
+        Timer timer;
+        btVector3 sum(0, 0, 0);
+        for (const HeapQuery& q : queries)
+            sum +=
+                shapes[static_cast<std::size_t>(q.hull)]->localGetSupportingVertexWithoutMargin(q.direction);
+        fastest = std::min(fastest, timer.seconds());
+        checksum = double(sum.x() + sum.y() + sum.z());
+    }
+    return fastest * 1e9 / double(queries.size());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -119,6 +166,27 @@ int main(int argc, char** argv) {
             std::printf("METRIC hull_support_ns_%s_%d %.1f ns\n", stream.c_str(), corners, graphNs);
             std::printf("METRIC hull_scan_ns_%s_%d %.1f ns\n", stream.c_str(), corners, scanNs);
         }
+    }
+    if (streams.size() > 1 && hulls.size() > 1) {
+        constexpr int kHeapHulls = 600, kHeapCorners = 150;
+        std::vector<std::unique_ptr<GraphHullShape>> graphs;
+        std::vector<std::unique_ptr<btConvexHullShape>> scans;
+        for (int h = 0; h < kHeapHulls; ++h) {
+            std::vector<btVector3> points = ellipsoidPoints(kHeapCorners, 1000u + unsigned(h));
+            const btScalar size = btScalar(0.2 + 0.8 * h / (kHeapHulls - 1));
+            for (btVector3& p : points) p *= size;
+            graphs.push_back(
+                std::make_unique<GraphHullShape>(&points[0].x(), kHeapCorners, sizeof(btVector3)));
+            scans.push_back(
+                std::make_unique<btConvexHullShape>(&points[0].x(), kHeapCorners, sizeof(btVector3)));
+        }
+        const std::vector<HeapQuery> heap = heapStream(kHeapHulls, queries, 13u);
+        double graphSum = 0, scanSum = 0;
+        const double graphNs = nsPerHeapQuery(graphs, heap, graphSum);
+        const double scanNs = nsPerHeapQuery(scans, heap, scanSum);
+        if (graphSum != scanSum) ++mismatches;
+        std::printf("METRIC hull_support_ns_heap_%dx%d %.1f ns\n", kHeapHulls, kHeapCorners, graphNs);
+        std::printf("METRIC hull_scan_ns_heap_%dx%d %.1f ns\n", kHeapHulls, kHeapCorners, scanNs);
     }
     if (mismatches) {
         std::fprintf(stderr, "bench_hull_support: %d streams where the walk and the scan disagree\n",
