@@ -18,12 +18,12 @@
 //   --queries N   queries per stream and hull (default 200,000)
 //   --stream NAME only this stream; --corners N: only the hull of N corners (at least 24);
 //                 either one leaves out the heap
-#include <btFracture/core/Timer.h>
+#include "BestOf.h"
+
 #include <btFracture/dynamics/GraphHullShape.h>
 
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -36,35 +36,41 @@ using namespace btfracture;
 
 namespace {
 
+// A vector of three standard normal components (its direction is uniform on the sphere).
+btVector3 gaussianVector(std::mt19937& rng) {
+    std::normal_distribution<double> normal;
+    const double x = normal(rng), y = normal(rng), z = normal(rng);
+    return btVector3(btScalar(x), btScalar(y), btScalar(z));
+}
+
 // `count` points on the ellipsoid with semi-axes 1, 0.6, 0.3 (all of them hull corners).
 std::vector<btVector3> ellipsoidPoints(int count, unsigned seed) {
     std::mt19937 rng(seed);
-    std::normal_distribution<double> normal;
     std::vector<btVector3> points;
     for (int i = 0; i < count; ++i) {
-        btVector3 p(btScalar(normal(rng)), btScalar(normal(rng)), btScalar(normal(rng)));
-        p.normalize();
+        const btVector3 p = gaussianVector(rng).normalized();
         points.emplace_back(p.x(), btScalar(0.6) * p.y(), btScalar(0.3) * p.z());
     }
     return points;
 }
 
+// `d` turned by about 0.05 rad in a random direction (a coherent stream's next query).
+btVector3 turned(const btVector3& d, std::mt19937& rng) {
+    return (d + btScalar(0.05) * gaussianVector(rng)).normalized();
+}
+
 // The query directions of `stream` ("random", "coherent" or "alternating").
 std::vector<btVector3> queryStream(const std::string& stream, int count, unsigned seed) {
     std::mt19937 rng(seed);
-    std::normal_distribution<double> normal;
-    auto gaussian = [&] {
-        return btVector3(btScalar(normal(rng)), btScalar(normal(rng)), btScalar(normal(rng)));
-    };
     std::vector<btVector3> directions;
-    btVector3 a = gaussian().normalized(), b = -a;
+    btVector3 a = gaussianVector(rng).normalized(), b = -a;
     for (int i = 0; i < count; ++i) {
         if (stream == "random") {
-            directions.push_back(gaussian());
+            directions.push_back(gaussianVector(rng));
             continue;
         }
         btVector3& d = (stream == "alternating" && i % 2) ? b : a;
-        d = (d + btScalar(0.05) * gaussian()).normalized();
+        d = turned(d, rng);
         directions.push_back(d);
     }
     return directions;
@@ -73,15 +79,12 @@ std::vector<btVector3> queryStream(const std::string& stream, int count, unsigne
 // Fastest of five passes over `directions`, in ns per query; `checksum` sums the answers.
 double nsPerQuery(const btConvexHullShape& shape, const std::vector<btVector3>& directions,
                   double& checksum) {
-    double fastest = 1e30;
-    for (int pass = 0; pass < 5; ++pass) {
-        Timer timer;
+    const double seconds = bestOf(5, [&] {
         btVector3 sum(0, 0, 0);
         for (const btVector3& d : directions) sum += shape.localGetSupportingVertexWithoutMargin(d);
-        fastest = std::min(fastest, timer.seconds());
         checksum = double(sum.x() + sum.y() + sum.z());
-    }
-    return fastest * 1e9 / double(directions.size());
+    });
+    return seconds * 1e9 / double(directions.size());
 }
 
 struct HeapQuery {
@@ -92,19 +95,15 @@ struct HeapQuery {
 // The heap's query stream: a random hull per query, each hull's directions coherent.
 std::vector<HeapQuery> heapStream(int hulls, int count, unsigned seed) {
     std::mt19937 rng(seed);
-    std::normal_distribution<double> normal;
     std::uniform_int_distribution<int> pick(0, hulls - 1);
-    auto gaussian = [&] {
-        return btVector3(btScalar(normal(rng)), btScalar(normal(rng)), btScalar(normal(rng)));
-    };
     std::vector<btVector3> current;
-    for (int h = 0; h < hulls; ++h) current.push_back(gaussian().normalized());
+    for (int h = 0; h < hulls; ++h) current.push_back(gaussianVector(rng).normalized());
     std::vector<HeapQuery> queries;
     for (int i = 0; i < count; ++i) {
         const int h = pick(rng);
-        current[static_cast<std::size_t>(h)] =
-            (current[static_cast<std::size_t>(h)] + btScalar(0.05) * gaussian()).normalized();
-        queries.push_back({h, current[static_cast<std::size_t>(h)]});
+        btVector3& d = current[static_cast<std::size_t>(h)];
+        d = turned(d, rng);
+        queries.push_back({h, d});
     }
     return queries;
 }
@@ -113,17 +112,14 @@ std::vector<HeapQuery> heapStream(int hulls, int count, unsigned seed) {
 template <class Shape>
 double nsPerHeapQuery(const std::vector<std::unique_ptr<Shape>>& shapes,
                       const std::vector<HeapQuery>& queries, double& checksum) {
-    double fastest = 1e30;
-    for (int pass = 0; pass < 5; ++pass) {
-        Timer timer;
+    const double seconds = bestOf(5, [&] {
         btVector3 sum(0, 0, 0);
         for (const HeapQuery& q : queries)
             sum +=
                 shapes[static_cast<std::size_t>(q.hull)]->localGetSupportingVertexWithoutMargin(q.direction);
-        fastest = std::min(fastest, timer.seconds());
         checksum = double(sum.x() + sum.y() + sum.z());
-    }
-    return fastest * 1e9 / double(queries.size());
+    });
+    return seconds * 1e9 / double(queries.size());
 }
 
 }  // namespace
@@ -132,6 +128,7 @@ int main(int argc, char** argv) {
     int queries = 200000;
     std::vector<int> hulls = {100, 500, 2000};
     std::vector<std::string> streams = {"random", "coherent", "alternating"};
+    bool heap = true;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         const bool hasValue = i + 1 < argc;
@@ -139,10 +136,12 @@ int main(int argc, char** argv) {
             queries = std::atoi(argv[++i]);
         } else if (arg == "--corners" && hasValue && std::atoi(argv[i + 1]) >= 24) {
             hulls = {std::atoi(argv[++i])};
+            heap = false;
         } else if (arg == "--stream" && hasValue &&
                    (std::strcmp(argv[i + 1], "random") == 0 || std::strcmp(argv[i + 1], "coherent") == 0 ||
                     std::strcmp(argv[i + 1], "alternating") == 0)) {
             streams = {argv[++i]};
+            heap = false;
         } else {
             std::fprintf(stderr,
                          "bench_hull_support: unknown or incomplete argument '%s'\n"
@@ -167,7 +166,7 @@ int main(int argc, char** argv) {
             std::printf("METRIC hull_scan_ns_%s_%d %.1f ns\n", stream.c_str(), corners, scanNs);
         }
     }
-    if (streams.size() > 1 && hulls.size() > 1) {
+    if (heap) {
         constexpr int kHeapHulls = 600, kHeapCorners = 150;
         std::vector<std::unique_ptr<GraphHullShape>> graphs;
         std::vector<std::unique_ptr<btConvexHullShape>> scans;
@@ -180,10 +179,10 @@ int main(int argc, char** argv) {
             scans.push_back(
                 std::make_unique<btConvexHullShape>(&points[0].x(), kHeapCorners, sizeof(btVector3)));
         }
-        const std::vector<HeapQuery> heap = heapStream(kHeapHulls, queries, 13u);
+        const std::vector<HeapQuery> heapQueries = heapStream(kHeapHulls, queries, 13u);
         double graphSum = 0, scanSum = 0;
-        const double graphNs = nsPerHeapQuery(graphs, heap, graphSum);
-        const double scanNs = nsPerHeapQuery(scans, heap, scanSum);
+        const double graphNs = nsPerHeapQuery(graphs, heapQueries, graphSum);
+        const double scanNs = nsPerHeapQuery(scans, heapQueries, scanSum);
         if (graphSum != scanSum) ++mismatches;
         std::printf("METRIC hull_support_ns_heap_%dx%d %.1f ns\n", kHeapHulls, kHeapCorners, graphNs);
         std::printf("METRIC hull_scan_ns_heap_%dx%d %.1f ns\n", kHeapHulls, kHeapCorners, scanNs);
