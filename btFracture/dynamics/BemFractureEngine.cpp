@@ -7,6 +7,7 @@
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/Timer.h>
+#include <btFracture/dynamics/HertzContact.h>
 #include <btFracture/dynamics/TractionBalance.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/fracture/CrackFront.h>
@@ -498,22 +499,38 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
         resident_->states.push_back(&s);
     }
     // Contacts into the BEM frame, then J n / (t_c A_e) on the nearest triangles, balanced (Eq. 6).
-    std::vector<BodyContact> local = contacts;
+    // What they can deliver (EST's energy bound, deliverableEnergy): the impacts' kinetic energy
+    // of approach, and the strain energy of the resting contacts' tractions.
+    std::vector<BodyContact> local = contacts, resting;
     const Eigen::Vector3d offset = s.solver->mesh().offset();
     double duration = 0.0;
+    ContactEnergy energy;
+    energy.kinetic = 0.0;
     for (BodyContact& c : local) {
         c.point = toState(s, c.point) - offset;
         c.direction = s.bodyToState.linear() * c.direction;
         duration = std::max(duration, c.duration);
+        if (c.approachSpeed >= kMinApproachSpeed)
+            energy.kinetic += 0.5 * c.effectiveMass * c.approachSpeed * c.approachSpeed;
+        else
+            resting.push_back(c);
     }
-    const TractionField balanced = s.balancer->balance(s.balancer->contactTractions(local));
-    Eigen::VectorXd q(3 * balanced.size());
-    for (std::size_t t = 0; t < balanced.size(); ++t) q.segment<3>(3 * t) = balanced[t];
+    auto balancedTractions = [&](const std::vector<BodyContact>& cs) {
+        const TractionField balanced = s.balancer->balance(s.balancer->contactTractions(cs));
+        Eigen::VectorXd q(3 * balanced.size());
+        for (std::size_t t = 0; t < balanced.size(); ++t) q.segment<3>(3 * t) = balanced[t];
+        return q;
+    };
+    const Eigen::VectorXd q = balancedTractions(local);
+    if (resting.size() == local.size())
+        energy = ContactEnergy{};  // a resting load: its strain energy stands
+    else if (!resting.empty())
+        energy.restingTractions = balancedTractions(resting);
     outcome.timings.bem += timer.seconds();
 
     timer.restart();
     const int trianglesBefore = s.fracture->cracks().triangleCount();
-    const FractureEventReport report = s.fracture->run(q, duration);
+    const FractureEventReport report = s.fracture->run(q, duration, energy);
     outcome.timings.fracture += timer.seconds() - report.solveSeconds;
     outcome.timings.bem += report.solveSeconds;
     for (const FractureStepRecord& r : report.steps)

@@ -34,7 +34,7 @@ std::size_t FractureSolver::crackSystemBytes() const {
     return full_ ? full_->matrixBytes() : 0;
 }
 
-void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
+void FractureSolver::beginEvent(const Eigen::VectorXd& q, const ContactEnergy& energy) {
     cracks_.refreshUnknowns(
         solver_.mesh());  // cracks may have been added from outside (pre-cracks, carried cracks)
     triangleInBody_.clear();
@@ -42,6 +42,8 @@ void FractureSolver::beginEvent(const Eigen::VectorXd& q) {
     tractions_ = q;
     peakStress_ = -1.0;
     strainEnergy_ = -1.0;
+    releasable_ = -1.0;
+    contactEnergy_ = energy;
     load_ = solver_.load(q);
     solver_.netLoad(q);  // validates size
     if (settings_.method == FractureMethod::Hybrid && active_ == FractureMethod::Full &&
@@ -145,8 +147,20 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
         out.push_back(e);
     }
     // With estimatorEnergyBound, the step's new crack releases at most the strain energy the
-    // tractions store (energyBoundScale); both are fixed for the event.
-    if (strainEnergy_ < 0.0) strainEnergy_ = solver_.strainEnergy(tractions_, crackFree_);
+    // tractions store, or what the contacts deliver where that is less (energyBoundScale,
+    // deliverableEnergy); both are fixed for the event.
+    if (strainEnergy_ < 0.0) {
+        strainEnergy_ = solver_.strainEnergy(tractions_, crackFree_);
+        const Eigen::VectorXd& resting = contactEnergy_.restingTractions;
+        const double restingEnergy = contactEnergy_.kinetic < strainEnergy_ && resting.size() > 0
+                                         ? solver_.strainEnergy(resting, solver_.displacements(resting))
+                                         : 0.0;
+        releasable_ = deliverableEnergy(strainEnergy_, contactEnergy_.kinetic, restingEnergy);
+        if (settings_.estimatorEnergyBound && releasable_ < strainEnergy_)
+            logf(LogLevel::Info, "fracture: the tractions store ", strainEnergy_,
+                 " J, the contacts deliver at most ", releasable_, " J (impacts ", contactEnergy_.kinetic,
+                 " J, resting load ", restingEnergy, " J); EST's energy bound uses the latter");
+    }
     energyScale_ = 1.0;
     if (!settings_.estimatorEnergyBound) return out;
     std::vector<FrontSifs> moving;
@@ -158,7 +172,7 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
         }
     energyScale_ =
         energyBoundScale(moving, toughness, m.youngsModulus(), m.poissonRatio(), m.compressiveFactor(),
-                         settings_.frontEdgeLength * elementSize_, settings_.minimumSpeed, strainEnergy_);
+                         settings_.frontEdgeLength * elementSize_, settings_.minimumSpeed, releasable_);
     if (energyScale_ < 1.0)
         for (FrontSifs& e : out) e.KI *= energyScale_, e.KII *= energyScale_, e.KIII *= energyScale_;
     return out;
@@ -204,8 +218,8 @@ FractureStepRecord FractureSolver::step(int index) {
     record.energyScale = active_ == FractureMethod::Estimated ? energyScale_ : 1.0;
     if (record.energyScale < 1.0)
         logf(LogLevel::Info, "fracture: step ", index, ": EST's SIFs scaled by ", record.energyScale,
-             " so that the step's new crack releases no more than the strain energy of the load, ",
-             strainEnergy_, " J");
+             " so that the step's new crack releases no more than the energy of the load, ", releasable_,
+             " J");
     if (record.gainLimitedNodes > 0)
         logf(LogLevel::Info, "fracture: step ", index, ": estimatorUpdateGainLimit ",
              settings_.estimatorUpdateGainLimit, " scaled down the SIFs of ", record.gainLimitedNodes, " of ",
@@ -347,11 +361,12 @@ Eigen::VectorXd FractureSolver::nodalOpenings() const {
     return out;
 }
 
-FractureEventReport FractureSolver::run(const Eigen::VectorXd& q, double contactDuration) {
+FractureEventReport FractureSolver::run(const Eigen::VectorXd& q, double contactDuration,
+                                        const ContactEnergy& energy) {
     FractureEventReport report;
     Timer timer;
     const bool wasFull = active_ == FractureMethod::Full;
-    beginEvent(q);
+    beginEvent(q, energy);
     report.seeds = seed();
     report.solveSeconds = timer.seconds();
     // Budget: the contact time at the Rayleigh speed, one element per step (FractureRB).

@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <vector>
@@ -42,6 +43,14 @@ struct FractureEventReport {
     std::vector<FractureStepRecord> steps;
 };
 
+// What an event's contacts can deliver, for EST's energy bound (deliverableEnergy): the impacts'
+// kinetic energy of approach, sum 1/2 m* v^2 [J] (infinite: not known, the tractions' strain
+// energy stands), and the tractions of its resting contacts (3m [Pa], balanced; empty: none).
+struct ContactEnergy {
+    double kinetic = std::numeric_limits<double>::infinity();
+    Eigen::VectorXd restingTractions;
+};
+
 class FractureSolver {
 public:
     // Borrows `solver` (the body's prefactored BEM), which must outlive this object.
@@ -57,11 +66,13 @@ public:
 
     // A whole event for P0 tractions q (3m [Pa], balanced) acting for `contactDuration` [s]
     // (<= 0: only the step cap limits propagation).
-    FractureEventReport run(const Eigen::VectorXd& tractions, double contactDuration);
+    FractureEventReport run(const Eigen::VectorXd& tractions, double contactDuration,
+                            const ContactEnergy& energy = {});
 
     // The pieces of run(), for tests and benchmarks:
-    void beginEvent(const Eigen::VectorXd& tractions);  // crack-free / current solve, stresses
-    int seed();                                         // initiation; returns new seeds
+    // The crack-free (EST) or current (FULL) solve and stresses; `energy` for the energy bound.
+    void beginEvent(const Eigen::VectorXd& tractions, const ContactEnergy& energy = {});
+    int seed();  // initiation; returns new seeds
     // SIFs of the active method now; with activeOnly, arrested front nodes are left out (EST then
     // evaluates the local stress only where the front can still move: cost ~ active front).
     std::vector<FrontSifs> frontSifs(bool activeOnly = false);
@@ -69,10 +80,12 @@ public:
     int gainLimitedNodes() const { return gainLimited_; }
     // EST: fronts whose local stress the last frontSifs() call bounded (boundStress).
     int stressBoundedNodes() const { return stressBounded_; }
-    // EST: the factor the last frontSifs() call put on every SIF (energyBoundScale; 1: none) and
-    // the strain energy of the event's tractions it used [J].
+    // EST: the factor the last frontSifs() call put on every SIF (energyBoundScale; 1: none), the
+    // strain energy of the event's tractions [J] and the part of it the bound let the fronts
+    // release (deliverableEnergy) [J].
     double energyScale() const { return energyScale_; }
     double strainEnergy() const { return strainEnergy_; }
+    double releasableEnergy() const { return releasable_; }
     FractureStepRecord step(int index);  // one propagation step
 
     // What the high-resolution front (CrackFront.h) tells the coarse sheet after it moved: the
@@ -123,7 +136,8 @@ private:
     // tractions' strain energy (both negative until computed), read by the gain limit, the
     // stress bound and the energy bound.
     Eigen::VectorXd crackFree_;
-    double peakStress_ = -1.0, strainEnergy_ = -1.0;
+    double peakStress_ = -1.0, strainEnergy_ = -1.0, releasable_ = -1.0;
+    ContactEnergy contactEnergy_;
     int stressBounded_ = 0;
     double energyScale_ = 1.0;
     Eigen::VectorXd leavingOpenings_;  // FULL: per crack node, the §4.3 estimate of its opening

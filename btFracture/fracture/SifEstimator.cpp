@@ -119,4 +119,8 @@ double energyBoundScale(const std::vector<FrontSifs>& sifs, const std::vector<do
     return lo;
 }
 
+double deliverableEnergy(double strainEnergy, double kinetic, double resting) {
+    return std::min(strainEnergy, kinetic + resting);
+}
+
 }  // namespace btfracture

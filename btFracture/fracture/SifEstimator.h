@@ -56,4 +56,11 @@ double energyBoundScale(const std::vector<FrontSifs>& sifs, const std::vector<do
                         double youngsModulus, double poissonRatio, double compressiveFactor, double step,
                         double minimumSpeed, double strainEnergy);
 
+// The energy the bound above may release [J]: the tractions' strain energy U, but no more than
+// the contacts can deliver. An impact stores at most the kinetic energy of its approach (the
+// quasi-static load J / t_c lasts only the contact time), `kinetic` = sum 1/2 m* v^2 (reduced
+// mass, normal approach speed); resting contacts add the strain energy `resting` of their own
+// tractions.
+double deliverableEnergy(double strainEnergy, double kinetic, double resting);
+
 }  // namespace btfracture

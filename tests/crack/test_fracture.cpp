@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -200,6 +201,41 @@ TEST(FractureSolver, StrainEnergyOfTheLoadIsClapeyronsAndLeavesUniformTensionUnb
     const double expected = sigma * sigma * volume / (2.0 * kGrowing.youngsModulus());
     EXPECT_NEAR(fracture.strainEnergy(), expected, 0.01 * expected);
     EXPECT_EQ(fracture.energyScale(), 1.0);
+}
+
+TEST(SifEstimator, DeliverableEnergyIsTheImpactsPlusTheRestingLoad) {
+    // window's first event: the ball's J / t_c stores 20.7 kJ, the ball brings 266 J and the
+    // frame's resting contacts store 250 J.
+    EXPECT_EQ(deliverableEnergy(2.07e4, 266.0, 250.0), 516.0);
+    EXPECT_EQ(deliverableEnergy(2.07e4, 3.0e4, 0.0), 2.07e4);  // never more than the tractions store
+    EXPECT_EQ(deliverableEnergy(2.07e4, std::numeric_limits<double>::infinity(), 0.0), 2.07e4);
+}
+
+TEST(FractureSolver, EnergyBoundReleasesNoMoreThanTheContactsDeliver) {
+    // The uniform tension of the slab stores 0.19 J (test above), enough for the step. An impact
+    // bringing a hundredth of that, plus resting tractions of a tenth of the load (a hundredth of
+    // its energy), let the step release a fiftieth: the estimate is scaled below 1, every node by
+    // the same factor.
+    const Slab s = slab(modeOneStress(), kGrowing);
+    FractureSettings fs = growthSettings(FractureMethod::Estimated);
+    fs.estimatorEnergyBound = true;
+    FractureSolver fracture(*s.solver, MaterialField(kGrowing), fs);
+    addGrowthPreCrack(fracture.cracks());
+    ContactEnergy energy;
+    fracture.beginEvent(s.tractions, energy);
+    const std::vector<FrontSifs> free = fracture.frontSifs();
+    ASSERT_EQ(fracture.energyScale(), 1.0);
+    const double U = fracture.strainEnergy();
+    EXPECT_EQ(fracture.releasableEnergy(), U);
+    energy.kinetic = 0.01 * U;
+    energy.restingTractions = 0.1 * s.tractions;
+    fracture.beginEvent(s.tractions, energy);
+    const std::vector<FrontSifs> bounded = fracture.frontSifs();
+    EXPECT_NEAR(fracture.releasableEnergy(), 0.02 * U, 1e-9 * U);
+    EXPECT_LT(fracture.energyScale(), 1.0);
+    ASSERT_EQ(bounded.size(), free.size());
+    for (std::size_t i = 0; i < free.size(); ++i)
+        EXPECT_NEAR(bounded[i].KI, fracture.energyScale() * free[i].KI, 1e-9 * std::abs(free[i].KI));
 }
 
 TEST(SifEstimator, OpeningFromSifsInvertsTheCorrelationAndClosesUnderCompression) {
