@@ -186,16 +186,25 @@ TEST(SifEstimator, EnergyBoundScalesTheStepToTheStrainEnergy) {
     EXPECT_NEAR(both, expected, 1e-5 * expected);
 }
 
+// The pre-cracked growth slab under mode-I tension, EST with its energy bound.
+struct EnergyBoundSlab {
+    static FractureSettings settings() {
+        FractureSettings fs = growthSettings(FractureMethod::Estimated);
+        fs.estimatorEnergyBound = true;
+        return fs;
+    }
+    EnergyBoundSlab() { addGrowthPreCrack(fracture.cracks()); }
+    const Slab s = slab(modeOneStress(), kGrowing);
+    FractureSolver fracture{*s.solver, MaterialField(kGrowing), settings()};
+};
+
 TEST(FractureSolver, StrainEnergyOfTheLoadIsClapeyronsAndLeavesUniformTensionUnbounded) {
     // Uniaxial stress sigma in the crack-free slab stores U = sigma^2 V / (2 E); a 1.2 cm crack
     // growing one step releases about 4 mJ of that 0.19 J, so the energy bound leaves EST's SIFs
     // as estimated.
-    const Slab s = slab(modeOneStress(), kGrowing);
-    FractureSettings fs = growthSettings(FractureMethod::Estimated);
-    fs.estimatorEnergyBound = true;
-    FractureSolver fracture(*s.solver, MaterialField(kGrowing), fs);
-    addGrowthPreCrack(fracture.cracks());
-    fracture.beginEvent(s.tractions);
+    EnergyBoundSlab b;
+    FractureSolver& fracture = b.fracture;
+    fracture.beginEvent(b.s.tractions);
     fracture.frontSifs();
     const double sigma = modeOneStress()(0, 0), volume = 0.2 * 0.1 * 0.06;
     const double expected = sigma * sigma * volume / (2.0 * kGrowing.youngsModulus());
@@ -216,11 +225,9 @@ TEST(FractureSolver, EnergyBoundReleasesNoMoreThanTheContactsDeliver) {
     // bringing a hundredth of that, plus resting tractions of a tenth of the load (a hundredth of
     // its energy), let the step release a fiftieth: the estimate is scaled below 1, every node by
     // the same factor.
-    const Slab s = slab(modeOneStress(), kGrowing);
-    FractureSettings fs = growthSettings(FractureMethod::Estimated);
-    fs.estimatorEnergyBound = true;
-    FractureSolver fracture(*s.solver, MaterialField(kGrowing), fs);
-    addGrowthPreCrack(fracture.cracks());
+    EnergyBoundSlab b;
+    FractureSolver& fracture = b.fracture;
+    const Slab& s = b.s;
     ContactEnergy energy;
     fracture.beginEvent(s.tractions, energy);
     const std::vector<FrontSifs> free = fracture.frontSifs();
