@@ -4,7 +4,7 @@
 #include <btFracture/core/ClosestPoint.h>
 #include <btFracture/dynamics/BulletEigen.h>
 
-#include <BulletCollision/CollisionShapes/btCollisionShape.h>
+#include <BulletCollision/CollisionShapes/btConvexShape.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <LinearMath/btTransformUtil.h>
 
@@ -55,8 +55,23 @@ bool SweepCandidateFilter::needBroadphaseCollision(btBroadphaseProxy* proxy0,
                            btScalar(1e-4) * scale + btScalar(1e-6);
     if (!(radius < btScalar(BT_LARGE_FLOAT))) return true;
     const Eigen::Vector3d c = toEigen(worldCentre);
-    if ((closestPointOnSegment(c, toEigen(from), toEigen(to)) - c).norm() <= double(reach)) return true;
+    const Eigen::Vector3d offset = closestPointOnSegment(c, toEigen(from), toEigen(to)) - c;
+    const double distance = offset.norm();
+    if (distance > double(reach)) {
+        ++rejected_;
+        return false;
+    }
+    // A convex candidate lies below its support plane along n (from its centre to the path's
+    // nearest point); the swept sphere stays above min(from.n, to.n) - r.
+    if (!candidate->getCollisionShape()->isConvex() || !(distance > 1e-9)) return true;
+    const auto* shape = static_cast<const btConvexShape*>(candidate->getCollisionShape());
+    const btVector3 n = toBullet((offset / distance).eval());
+    const btTransform& t = candidate->getWorldTransform();
+    const btScalar top = t(shape->localGetSupportingVertex(n * t.getBasis())).dot(n);
+    const btScalar bottom = btMin(from.dot(n), to.dot(n)) - swept->getCcdSweptSphereRadius();
+    if (bottom - top <= kAdvancementTolerance + btScalar(1e-4) * scale + btScalar(1e-6)) return true;
     ++rejected_;
+    ++rejectedBySupport_;
     return false;
 }
 

@@ -38,8 +38,9 @@ struct FilteredWorld : btDiscreteDynamicsWorld {
     void count(const SweepCandidateFilter& filter) {
         queries += filter.queries();
         rejected += filter.rejected();
+        rejectedBySupport += filter.rejectedBySupport();
     }
-    long long queries = 0, rejected = 0;
+    long long queries = 0, rejected = 0, rejectedBySupport = 0;
 };
 
 // Bodies the application's filter keeps out of every pair and sweep (user index 1).
@@ -56,6 +57,9 @@ struct GhostFilter : btOverlapFilterCallback {
 // 5 cm leaf margin of its neighbours) and eight 1 cm balls crossing it at 15-25 m/s (6-10 cm a
 // step at 250 Hz: they would tunnel without CCD) with CCD on (threshold 5 mm, swept sphere 4 mm).
 // The cubes of the bottom layer (z = 0) are ghosts (user index 1) where the test asks for them.
+// With `plates`, the cubes are 24 x 24 x 2 mm plates and the odd balls fly midway between two
+// layers (1.5 cm from the plates, within the plates' 1.7 cm bounding radius), the even ones
+// 0.5 mm above a layer's mid-plane, into the plates' edges.
 struct Lattice {
     btDefaultCollisionConfiguration config;
     btCollisionDispatcher dispatcher{&config};
@@ -63,11 +67,12 @@ struct Lattice {
     btSequentialImpulseConstraintSolver solver;
     std::unique_ptr<btDiscreteDynamicsWorld> world;
     btBoxShape cube{btVector3(0.005f, 0.005f, 0.005f)};
+    btBoxShape plate{btVector3(0.012f, 0.012f, 0.001f)};
     btSphereShape ball{0.005f};
     std::vector<std::unique_ptr<btRigidBody>> cubes, balls;
     GhostFilter ghosts;
 
-    Lattice(bool filtered, bool withGhosts) {
+    Lattice(bool filtered, bool withGhosts, bool plates = false) {
         if (filtered)
             world = std::make_unique<FilteredWorld>(&dispatcher, &broadphase, &solver, &config);
         else
@@ -77,13 +82,16 @@ struct Lattice {
         for (int i = 0; i < 9; ++i)
             for (int j = 0; j < 9; ++j)
                 for (int k = 0; k < 3; ++k) {
-                    auto body = makeBody(cube, 0.001f, btVector3(0.03f * i, 0.03f * j, 0.03f * k));
+                    auto body = makeBody(plates ? plate : cube, 0.001f,
+                                         btVector3(0.03f * i, 0.03f * j, 0.03f * k));
                     body->setUserIndex(k == 0 ? 1 : 0);
                     cubes.push_back(std::move(body));
                 }
         for (int b = 0; b < 8; ++b) {
             // Each aimed at a row of cubes (y = 3 cm j, z = 3 cm k), up to 4 mm off its axis.
-            const btScalar y = btScalar(0.03) * b + btScalar(0.002) * (b % 3), z = btScalar(0.03) * (b % 3);
+            const btScalar y = btScalar(0.03) * b + btScalar(0.002) * (b % 3);
+            const btScalar z = btScalar(0.03) * (b % 3) +
+                               (plates ? btScalar(b % 2 ? 0.015 : 0.0005) : btScalar(0));
             auto body = makeBody(ball, 0.002f, btVector3(-0.2f, y, z));
             body->setLinearVelocity(btVector3(btScalar(15.0 + 10.0 * b / 7.0), 0, 0));
             body->setCcdMotionThreshold(0.005f);
@@ -149,6 +157,21 @@ TEST(SweepCandidateFilter, SameMotionAsBulletsSweepsWithMostCandidatesLeftOut) {
     int hit = 0;
     for (const auto& c : ours.cubes) hit += c->getLinearVelocity().length2() > btScalar(0);
     EXPECT_GE(hit, 40);
+}
+
+TEST(SweepCandidateFilter, PlatesBesideThePathLeftOutByTheirSupportPlane) {
+    Lattice bullet(false, false, true), ours(true, false, true);
+    bullet.run(40);
+    ours.run(40);
+    expectSameState(bullet.state(), ours.state());
+    const auto& world = static_cast<const FilteredWorld&>(*ours.world);
+    // The plates next to the odd balls' paths reach them with their bounding spheres, not with
+    // their faces: the support plane leaves them out.
+    EXPECT_GT(world.rejectedBySupport, 100);
+    EXPECT_LT(world.rejected, world.queries);
+    int hit = 0;
+    for (const auto& c : ours.cubes) hit += c->getLinearVelocity().length2() > btScalar(0);
+    EXPECT_GE(hit, 10);
 }
 
 TEST(SweepCandidateFilter, ApplicationsOverlapFilterStillDecides) {
