@@ -82,16 +82,16 @@ struct Lattice {
         for (int i = 0; i < 9; ++i)
             for (int j = 0; j < 9; ++j)
                 for (int k = 0; k < 3; ++k) {
-                    auto body = makeBody(plates ? plate : cube, 0.001f,
-                                         btVector3(0.03f * i, 0.03f * j, 0.03f * k));
+                    auto body =
+                        makeBody(plates ? plate : cube, 0.001f, btVector3(0.03f * i, 0.03f * j, 0.03f * k));
                     body->setUserIndex(k == 0 ? 1 : 0);
                     cubes.push_back(std::move(body));
                 }
         for (int b = 0; b < 8; ++b) {
             // Each aimed at a row of cubes (y = 3 cm j, z = 3 cm k), up to 4 mm off its axis.
             const btScalar y = btScalar(0.03) * b + btScalar(0.002) * (b % 3);
-            const btScalar z = btScalar(0.03) * (b % 3) +
-                               (plates ? btScalar(b % 2 ? 0.015 : 0.0005) : btScalar(0));
+            const btScalar z =
+                btScalar(0.03) * (b % 3) + (plates ? btScalar(b % 2 ? 0.015 : 0.0005) : btScalar(0));
             auto body = makeBody(ball, 0.002f, btVector3(-0.2f, y, z));
             body->setLinearVelocity(btVector3(btScalar(15.0 + 10.0 * b / 7.0), 0, 0));
             body->setCcdMotionThreshold(0.005f);
