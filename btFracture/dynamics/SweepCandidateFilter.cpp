@@ -43,16 +43,18 @@ bool SweepCandidateFilter::needBroadphaseCollision(btBroadphaseProxy* proxy0,
     btTransform predicted;
     btTransformUtil::integrateTransform(swept->getWorldTransform(), swept->getLinearVelocity(),
                                         swept->getAngularVelocity(), timeStep_, predicted);
+    const btCollisionShape* shape = candidate->getCollisionShape();
     btVector3 centre;
     btScalar radius;
-    candidate->getCollisionShape()->getBoundingSphere(centre, radius);
+    shape->getBoundingSphere(centre, radius);
     const btVector3 worldCentre = candidate->getWorldTransform() * centre;
     const btVector3& from = swept->getWorldTransform().getOrigin();
     const btVector3& to = predicted.getOrigin();
-    // Rounding slack relative to the lengths involved (float Bullet: 1e-4 of them).
+    // The advancement's tolerance and a rounding slack relative to the lengths involved (float
+    // Bullet: 1e-4 of them).
     const btScalar scale = radius + swept->getCcdSweptSphereRadius() + (to - from).length();
-    const btScalar reach = swept->getCcdSweptSphereRadius() + radius + kAdvancementTolerance +
-                           btScalar(1e-4) * scale + btScalar(1e-6);
+    const btScalar allowance = kAdvancementTolerance + btScalar(1e-4) * scale + btScalar(1e-6);
+    const btScalar reach = swept->getCcdSweptSphereRadius() + radius + allowance;
     if (!(radius < btScalar(BT_LARGE_FLOAT))) return true;
     const Eigen::Vector3d c = toEigen(worldCentre);
     const Eigen::Vector3d offset = closestPointOnSegment(c, toEigen(from), toEigen(to)) - c;
@@ -63,13 +65,13 @@ bool SweepCandidateFilter::needBroadphaseCollision(btBroadphaseProxy* proxy0,
     }
     // A convex candidate lies below its support plane along n (from its centre to the path's
     // nearest point); the swept sphere stays above min(from.n, to.n) - r.
-    if (!candidate->getCollisionShape()->isConvex() || !(distance > 1e-9)) return true;
-    const auto* shape = static_cast<const btConvexShape*>(candidate->getCollisionShape());
+    if (!shape->isConvex() || !(distance > 1e-9)) return true;
     const btVector3 n = toBullet((offset / distance).eval());
     const btTransform& t = candidate->getWorldTransform();
-    const btScalar top = t(shape->localGetSupportingVertex(n * t.getBasis())).dot(n);
+    const btScalar top =
+        t(static_cast<const btConvexShape*>(shape)->localGetSupportingVertex(n * t.getBasis())).dot(n);
     const btScalar bottom = btMin(from.dot(n), to.dot(n)) - swept->getCcdSweptSphereRadius();
-    if (bottom - top <= kAdvancementTolerance + btScalar(1e-4) * scale + btScalar(1e-6)) return true;
+    if (bottom - top <= allowance) return true;
     ++rejected_;
     ++rejectedBySupport_;
     return false;
