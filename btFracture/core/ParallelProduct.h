@@ -33,7 +33,7 @@ Eigen::VectorXd productInDouble(const Eigen::MatrixBase<Float>& a, const Eigen::
     return out;
 }
 
-// a^T b for a (k x m) and b (k x n): an m x n matrix.
+// a^T b for a (k x m) and b (k x n): an m x n matrix, in fixed blocks of rows and columns.
 Eigen::MatrixXd transposedProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
                                   const Eigen::Ref<const Eigen::MatrixXd>& b);
 
