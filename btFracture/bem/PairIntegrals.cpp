@@ -7,7 +7,9 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 namespace btfracture {
 namespace {
@@ -335,22 +337,26 @@ void addSubdivided(const SubPanel& x, const SubPanel& y, const QuadratureSetting
         for (int c = 1; c < 4; ++c)
             pairs.push_back(splitA ? std::make_pair(children[c], b) : std::make_pair(a, children[c]));
     }
+    std::vector<std::array<double, 6>> yp;  // b's points and hat values, once per sub-pair
     for (const auto& [a, b] : pairs) {
         const TriangleRule& rule = triangleRule(separatedRuleDegree(etaOf(a, b), s));
+        const int count = static_cast<int>(rule.points.size());
+        yp.resize(count);
+        for (int j = 0; j < count; ++j) {
+            const auto& q = rule.points[j];
+            for (int k = 0; k < 3; ++k) {
+                yp[j][k] = q.l0 * b.corners[0][k] + q.l1 * b.corners[1][k] + q.l2 * b.corners[2][k];
+                yp[j][3 + k] = q.l0 * b.hats[0][k] + q.l1 * b.hats[1][k] + q.l2 * b.hats[2][k];
+            }
+        }
         for (const auto& p : rule.points) {
             double xp[3], phiX[3];
             for (int k = 0; k < 3; ++k) {
                 xp[k] = p.l0 * a.corners[0][k] + p.l1 * a.corners[1][k] + p.l2 * a.corners[2][k];
                 phiX[k] = p.l0 * a.hats[0][k] + p.l1 * a.hats[1][k] + p.l2 * a.hats[2][k];
             }
-            for (const auto& q : rule.points) {
-                double yp[3], phiY[3];
-                for (int k = 0; k < 3; ++k) {
-                    yp[k] = q.l0 * b.corners[0][k] + q.l1 * b.corners[1][k] + q.l2 * b.corners[2][k];
-                    phiY[k] = q.l0 * b.hats[0][k] + q.l1 * b.hats[1][k] + q.l2 * b.hats[2][k];
-                }
-                acc.add(xp, yp, phiX, phiY, p.w * a.area * q.w * b.area);
-            }
+            for (int j = 0; j < count; ++j)
+                acc.add(xp, yp[j].data(), phiX, yp[j].data() + 3, p.w * a.area * rule.points[j].w * b.area);
         }
     }
 }
