@@ -34,11 +34,12 @@ struct FractureStatistics {
     std::uint64_t fractureEvents = 0;    // calls that returned fragments
     std::uint64_t fragmentsSpawned = 0;  // bodies added in place of their parents
     std::uint64_t replayedSteps = 0;     // steps rolled back and replayed after a fracture
-    std::uint64_t bemBuilds = 0;         // incremented by the engine
-    double contactSeconds = 0.0;         // wall time converting triggered bodies' contacts [s]
-    double engineSeconds = 0.0;          // wall time in every fracture() call, broken or not [s]
-    double swapSeconds = 0.0;            // wall time restoring, swapping and separating [s]
-    double maxLoadRatio = 0.0;           // largest K_eff / K_c any crack front met, broken or not
+    std::uint64_t spinsLimited = 0;  // fragment steps whose spin was cut to what a step turns (SpinLimit.h)
+    std::uint64_t bemBuilds = 0;     // incremented by the engine
+    double contactSeconds = 0.0;     // wall time converting triggered bodies' contacts [s]
+    double engineSeconds = 0.0;      // wall time in every fracture() call, broken or not [s]
+    double swapSeconds = 0.0;        // wall time restoring, swapping and separating [s]
+    double maxLoadRatio = 0.0;       // largest K_eff / K_c any crack front met, broken or not
 
     // The fracture time of the paper's Table 1 (t_f): the engine's input (the triggered bodies'
     // contacts with their Hertz durations and surface curvatures, §5.1), every engine call and

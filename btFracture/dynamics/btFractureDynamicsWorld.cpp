@@ -14,6 +14,7 @@
 #include <btFracture/dynamics/HertzContact.h>
 #include <btFracture/dynamics/NewPairMultipoint.h>
 #include <btFracture/dynamics/SeparatedConvexPairs.h>
+#include <btFracture/dynamics/SpinLimit.h>
 #include <btFracture/dynamics/SweepCandidateFilter.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 
@@ -27,6 +28,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -407,6 +409,17 @@ void btFractureDynamicsWorld::setEnergyAuditSteps(int steps) {
 }
 
 void btFractureDynamicsWorld::integrateTransforms(btScalar timeStep) {
+    for (const auto& fragment : owned_) {
+        const double spin = limitSpinToStep(*fragment, double(timeStep));
+        if (spin == 0.0) continue;
+        ++stats_.spinsLimited;
+        static std::atomic<bool> logged{false};
+        if (!logged.exchange(true))
+            logf(
+                LogLevel::Info, fragment->name(), ": spin ", spin, " rad/s limited to the ",
+                integrableSpin(double(timeStep)),
+                " rad/s a step turns a body (pi/4 per step, Bullet's integrator); reported once per process");
+    }
     SweepCandidateFilter filter(*getBroadphase()->getOverlappingPairCache(), timeStep);
     btDiscreteDynamicsWorld::integrateTransforms(timeStep);
 }

@@ -37,6 +37,10 @@
 // touching bodies (ContactIslandManager.h) instead of Bullet's islands of nearby ones.
 // With fracture disabled, no engine, or no btFractureRigidBody added, a step is Bullet's step.
 //
+// Spin: before Bullet integrates a step, each fragment's angular velocity is limited to the
+// rotation the step performs (pi/4 per step, SpinLimit.h), so that the contact solver does not
+// meet contacts with spin the body never turns by; counted in FractureStatistics::spinsLimited.
+//
 // Penetration recovery: fragments can start overlapping their neighbours where their convex
 // collision pieces could not be cut apart or pushed far enough (FragmentSeparation.h). Bullet's
 // default turns penetrations shallower than btContactSolverInfo::m_splitImpulsePenetrationThreshold
