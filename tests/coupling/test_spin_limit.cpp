@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Zlib
 // Fragments spin no faster than Bullet turns them in a step (dynamics/SpinLimit.h).
+#include "../support/GroundCheck.h"
 #include "CouplingScene.h"
 
 #include <btFracture/dynamics/SpinLimit.h>
@@ -14,7 +15,7 @@ using namespace btfracture::test;
 
 namespace {
 
-// A 14 x 2 x 1.2 mm glass sliver (70 mg) thrown at the ground at 4.6 m/s, spinning at
+// A 14 x 2 x 1.2 mm sliver of 70 mg thrown at the ground at 4.6 m/s, spinning at
 // 1,500 rad/s about a seeded axis (what a chase ball gave a chip in the stability suite); 2 s
 // at 240 Hz in Bullet's own world, its solver set as btFractureDynamicsWorld sets it for
 // fragments (split impulse below 0.5 mm). Returns the top of its bounding box at the end [m].
@@ -80,13 +81,12 @@ TEST(SpinLimit, CutsToWhatAStepTurnsAndKeepsTheAxis) {
 // slivers sink through the ground plane. With the spin limited none ends below it.
 TEST(SpinLimit, SpinningSliversStayAboveTheGround) {
     constexpr int kThrows = 200;
-    constexpr double kSlop = 0.001;  // [m], Bullet's penetration slop
     int belowPlain = 0, belowLimited = 0;
     double lowestLimited = INFINITY;
     for (int seed = 0; seed < kThrows; ++seed) {
-        belowPlain += sliverTopAtEnd(seed, false) < -kSlop;
+        belowPlain += sliverTopAtEnd(seed, false) < -kGroundSlop;
         const double top = sliverTopAtEnd(seed, true);
-        belowLimited += top < -kSlop;
+        belowLimited += top < -kGroundSlop;
         lowestLimited = std::min(lowestLimited, top);
     }
     std::printf(
