@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/SeparatedPairCache.h>
 
+#include <btFracture/dynamics/ContactPad.h>
+
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObject.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
@@ -67,17 +69,21 @@ btScalar slack(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper
 }
 
 // True when the bodies' broadphase boxes (each the shape's box at its current transform, widened
-// by gContactBreakingThreshold: btCollisionWorld::updateSingleAabb) leave a gap wider than `limit`
-// between the shapes: along an axis where the boxes are g apart (g < 0: they overlap by -g) the
-// shapes are at least g + 2 gContactBreakingThreshold apart.
-bool boxesApart(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b, btScalar limit) {
-    const btBroadphaseProxy* pa = a.getCollisionObject()->getBroadphaseHandle();
-    const btBroadphaseProxy* pb = b.getCollisionObject()->getBroadphaseHandle();
+// by at least its broadphasePad: btCollisionWorld::updateSingleAabb, btFractureDynamicsWorld::
+// updateAabbs) leave a gap wider than `limit` between the shapes: along an axis where the boxes
+// are g apart (g < 0: they overlap by -g) the shapes are at least g + both pads apart.
+bool boxesApart(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b, btScalar limit,
+                const btDispatcher* dispatcher) {
+    const btCollisionObject& objectA = *a.getCollisionObject();
+    const btCollisionObject& objectB = *b.getCollisionObject();
+    const btBroadphaseProxy* pa = objectA.getBroadphaseHandle();
+    const btBroadphaseProxy* pb = objectB.getBroadphaseHandle();
     if (!pa || !pb) return false;
     btScalar gap = -BT_LARGE_FLOAT;
     for (int k = 0; k < 3; ++k)
         gap = btMax(gap, btMax(pb->m_aabbMin[k] - pa->m_aabbMax[k], pa->m_aabbMin[k] - pb->m_aabbMax[k]));
-    return gap + 2 * gContactBreakingThreshold > limit * btScalar(1.01) + btScalar(1e-6);
+    const btScalar pads = broadphasePad(objectA, dispatcher) + broadphasePad(objectB, dispatcher);
+    return gap + pads > limit * btScalar(1.01) + btScalar(1e-6);
 }
 
 // sin of half the angle between two rotations.
@@ -89,10 +95,11 @@ btScalar halfAngleSine(const btQuaternion& from, const btQuaternion& to) {
 }  // namespace
 
 bool SeparatedPairCache::apart(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b,
-                               const btPersistentManifold& manifold, btScalar reach) {
+                               const btPersistentManifold& manifold, const btDispatcher* dispatcher,
+                               btScalar reach) {
     if (manifold.getNumContacts() > 0) return valid_ = false;
     const btScalar limit = manifold.getContactBreakingThreshold() + reach;
-    if (boxesApart(a, b, limit)) return true;
+    if (boxesApart(a, b, limit, dispatcher)) return true;
     if (valid_) {
         const bool swapped = a.getCollisionObject() != bodyA_;
         const btTransform& ta = (swapped ? b : a).getWorldTransform();

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Zlib
 #include <btFracture/dynamics/SizeScaledBroadphase.h>
 
+#include <btFracture/dynamics/ContactPad.h>
+
+#include <BulletCollision/CollisionDispatch/btCollisionObject.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include <stdexcept>
@@ -20,7 +23,9 @@ void SizeScaledBroadphase::setFraction(btScalar fraction) {
 void SizeScaledBroadphase::setAabb(btBroadphaseProxy* absproxy, const btVector3& aabbMin,
                                    const btVector3& aabbMax, btDispatcher* dispatcher) {
     auto* proxy = static_cast<btDbvtProxy*>(absproxy);
-    const btVector3 extent = aabbMax - aabbMin - btVector3(1, 1, 1) * (2 * gContactBreakingThreshold);
+    const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
+    const btScalar pad = object ? broadphasePad(*object, dispatcher) : gContactBreakingThreshold;
+    const btVector3 extent = aabbMax - aabbMin - btVector3(1, 1, 1) * (2 * pad);
     const btScalar margin = fraction_ * btMax(extent[extent.maxAxis()], btScalar(0));
     const bool fixedSet = proxy->stage == STAGECOUNT;
     // Bullet's own update when its margin applies, when the leaf still holds the box (nothing

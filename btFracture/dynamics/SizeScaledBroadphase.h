@@ -5,10 +5,10 @@
 // leaf, so that the tree is not updated every step; the pair cache holds every pair whose leaves
 // overlap. Made for metre-sized bodies: among centimetre chips a 5 cm margin makes almost every
 // chip of a heap a pair of every other, and each pair costs a narrowphase dispatch per step. Here
-// a leaf is widened by min(gDbvtMargin, fraction x the body's box size), the box without Bullet's
-// contact breaking threshold (btCollisionWorld::updateSingleAabb adds gContactBreakingThreshold to
-// every side). A leaf still holds its body's whole box, so no pair within the contact breaking
-// threshold is lost; a smaller leaf is updated more often.
+// a leaf is widened by min(gDbvtMargin, fraction x the body's box size), the box without its
+// contact pad (ContactPad.h: what btCollisionWorld::updateSingleAabb or btFractureDynamicsWorld::
+// updateAabbs adds to every side). A leaf still holds its body's whole box, so no pair within
+// the contact breaking threshold is lost; a smaller leaf is updated more often.
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 
 namespace btfracture {

@@ -8,6 +8,7 @@
 #include <btFracture/dynamics/BulletEigen.h>
 #include <btFracture/dynamics/ContactCurvature.h>
 #include <btFracture/dynamics/ContactIslandManager.h>
+#include <btFracture/dynamics/ContactPad.h>
 #include <btFracture/dynamics/FiniteState.h>
 #include <btFracture/dynamics/FractureEnergy.h>
 #include <btFracture/dynamics/FragmentSeparation.h>
@@ -23,6 +24,7 @@
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+#include <LinearMath/btQuickprof.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -406,6 +408,27 @@ void btFractureDynamicsWorld::setEnergyAuditSteps(int steps) {
     if (steps < 0)
         throw Error("btFractureDynamicsWorld: energy audit steps must be >= 0, not " + std::to_string(steps));
     energyAuditSteps_ = steps;
+}
+
+void btFractureDynamicsWorld::updateAabbs() {
+    BT_PROFILE("updateAabbs");
+    for (int i = 0; i < m_collisionObjects.size(); ++i) {
+        btCollisionObject* object = m_collisionObjects[i];
+        if (!(m_forceUpdateAllAabbs || object->isActive())) continue;
+        if (!btFractureRigidBody::upcast(object)) {
+            updateSingleAabb(object);
+            continue;
+        }
+        btVector3 aabbMin, aabbMax;
+        paddedAabb(*object, getDispatchInfo().m_useContinuous, broadphasePad(*object, m_dispatcher1), aabbMin,
+                   aabbMax);
+        // Bullet's guard against a runaway body (updateSingleAabb).
+        if (!object->isStaticObject() && !((aabbMax - aabbMin).length2() < btScalar(1e12))) {
+            updateSingleAabb(object);
+            continue;
+        }
+        m_broadphasePairCache->setAabb(object->getBroadphaseHandle(), aabbMin, aabbMax, m_dispatcher1);
+    }
 }
 
 void btFractureDynamicsWorld::integrateTransforms(btScalar timeStep) {

@@ -146,6 +146,9 @@ public:
     void addRigidBody(btRigidBody* body) override;
     void addRigidBody(btRigidBody* body, int group, int mask) override;
     void removeRigidBody(btRigidBody* body) override;
+    // Bullet's box update, with the boxes of btFractureRigidBody bodies padded by their own contact
+    // breaking threshold instead of Bullet's 2 cm (ContactPad.h).
+    void updateAabbs() override;
 
 protected:
     void internalSingleStepSimulation(btScalar timeStep) override;
