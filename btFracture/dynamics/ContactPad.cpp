@@ -10,15 +10,22 @@
 
 namespace btfracture {
 
-btScalar broadphasePad(const btCollisionObject& object, const btDispatcher* dispatcher) {
+bool usesRelativeThresholds(const btDispatcher* dispatcher) {
     const auto* collisionDispatcher = dynamic_cast<const btCollisionDispatcher*>(dispatcher);
-    const bool relative =
-        collisionDispatcher && (collisionDispatcher->getDispatcherFlags() &
-                                btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
-    if (!relative || !btFractureRigidBody::upcast(&object) || !object.getCollisionShape())
+    return collisionDispatcher && (collisionDispatcher->getDispatcherFlags() &
+                                   btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
+}
+
+btScalar padFor(const btCollisionObject& object, bool relativeThresholds) {
+    if (!relativeThresholds || !btFractureRigidBody::upcast(&object) || !object.getCollisionShape())
         return gContactBreakingThreshold;
     return btMin(gContactBreakingThreshold,
                  object.getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold));
+}
+
+btScalar broadphasePad(const btCollisionObject& object) {
+    const btFractureRigidBody* body = btFractureRigidBody::upcast(&object);
+    return body ? body->broadphasePad() : gContactBreakingThreshold;
 }
 
 void paddedAabb(const btCollisionObject& object, bool continuous, btScalar pad, btVector3& aabbMin,

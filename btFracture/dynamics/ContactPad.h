@@ -17,10 +17,18 @@ class btDispatcher;
 
 namespace btfracture {
 
-// The pad of `object`'s broadphase box [m]: for a btFractureRigidBody under a dispatcher with
-// relative contact breaking thresholds min(gContactBreakingThreshold, the shape's threshold),
-// otherwise gContactBreakingThreshold.
-btScalar broadphasePad(const btCollisionObject& object, const btDispatcher* dispatcher);
+// True when `dispatcher` gives manifolds the smaller of the two shapes' own thresholds
+// (btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD).
+bool usesRelativeThresholds(const btDispatcher* dispatcher);
+
+// The pad `object`'s broadphase box should get [m]: for a btFractureRigidBody under relative
+// thresholds min(gContactBreakingThreshold, the shape's threshold), otherwise
+// gContactBreakingThreshold. The world calls it once per body and box update.
+btScalar padFor(const btCollisionObject& object, bool relativeThresholds);
+
+// The pad of the box `object` has in the broadphase [m]: the one the world stored with the box
+// for a btFractureRigidBody, gContactBreakingThreshold for other bodies.
+btScalar broadphasePad(const btCollisionObject& object);
 
 // The box btCollisionWorld::updateSingleAabb gives `object` with `pad` instead of
 // gContactBreakingThreshold: the shape's box at the world transform, with `continuous` (and a

@@ -88,7 +88,7 @@ public:
                                    ? btScalar(0)
                                    : gContactBreakingThreshold + a->getCollisionShape()->getMargin() +
                                          b->getCollisionShape()->getMargin();
-        if (cache_ && cache_->apart(*a, *b, *manifold_, m_dispatcher, reach)) return;
+        if (cache_ && cache_->apart(*a, *b, *manifold_, reach)) return;
         (plain ? plain_ : perturbed_)->processCollision(a, b, info, result);
         // Bullet's algorithms leave refreshing a manifold they do not own to its owner.
         if (ownManifold_ && manifold_->getNumContacts() > 0) {

@@ -28,7 +28,7 @@ public:
                           const btDispatcherInfo& info, btManifoldResult* result) override {
         // The first call runs: it makes the manifold, in the dispatcher's order.
         btPersistentManifold* m = manifold();
-        if (m && cache_->apart(*a, *b, *m, m_dispatcher)) return;
+        if (m && cache_->apart(*a, *b, *m)) return;
         inner_->processCollision(a, b, info, result);
     }
     btScalar calculateTimeOfImpact(btCollisionObject* a, btCollisionObject* b, const btDispatcherInfo& info,

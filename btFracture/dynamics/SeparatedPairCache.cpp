@@ -69,11 +69,10 @@ btScalar slack(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper
 }
 
 // True when the bodies' broadphase boxes (each the shape's box at its current transform, widened
-// by at least its broadphasePad: btCollisionWorld::updateSingleAabb, btFractureDynamicsWorld::
+// by its broadphasePad: btCollisionWorld::updateSingleAabb, btFractureDynamicsWorld::
 // updateAabbs) leave a gap wider than `limit` between the shapes: along an axis where the boxes
 // are g apart (g < 0: they overlap by -g) the shapes are at least g + both pads apart.
-bool boxesApart(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b, btScalar limit,
-                const btDispatcher* dispatcher) {
+bool boxesApart(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b, btScalar limit) {
     const btCollisionObject& objectA = *a.getCollisionObject();
     const btCollisionObject& objectB = *b.getCollisionObject();
     const btBroadphaseProxy* pa = objectA.getBroadphaseHandle();
@@ -82,7 +81,7 @@ bool boxesApart(const btCollisionObjectWrapper& a, const btCollisionObjectWrappe
     btScalar gap = -BT_LARGE_FLOAT;
     for (int k = 0; k < 3; ++k)
         gap = btMax(gap, btMax(pb->m_aabbMin[k] - pa->m_aabbMax[k], pa->m_aabbMin[k] - pb->m_aabbMax[k]));
-    const btScalar pads = broadphasePad(objectA, dispatcher) + broadphasePad(objectB, dispatcher);
+    const btScalar pads = broadphasePad(objectA) + broadphasePad(objectB);
     return gap + pads > limit * btScalar(1.01) + btScalar(1e-6);
 }
 
@@ -95,11 +94,10 @@ btScalar halfAngleSine(const btQuaternion& from, const btQuaternion& to) {
 }  // namespace
 
 bool SeparatedPairCache::apart(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b,
-                               const btPersistentManifold& manifold, const btDispatcher* dispatcher,
-                               btScalar reach) {
+                               const btPersistentManifold& manifold, btScalar reach) {
     if (manifold.getNumContacts() > 0) return valid_ = false;
     const btScalar limit = manifold.getContactBreakingThreshold() + reach;
-    if (boxesApart(a, b, limit, dispatcher)) return true;
+    if (boxesApart(a, b, limit)) return true;
     if (valid_) {
         const bool swapped = a.getCollisionObject() != bodyA_;
         const btTransform& ta = (swapped ? b : a).getWorldTransform();

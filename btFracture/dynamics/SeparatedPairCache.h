@@ -18,7 +18,6 @@
 #include <LinearMath/btVector3.h>
 
 class btCollisionObject;
-class btDispatcher;
 struct btCollisionObjectWrapper;
 class btPersistentManifold;
 
@@ -28,14 +27,13 @@ class SeparatedPairCache {
 public:
     // True when the call for (a, b) at their current transforms may be skipped: `manifold` is
     // empty and the gap exceeds its contact breaking threshold plus `reach`. First tried: the gap
-    // the bodies' broadphase boxes leave (each widened by at least its broadphasePad); then
+    // the bodies' broadphase boxes leave (each widened by its broadphasePad); then
     // the bound from the last measurement; when that no longer holds, the gap is measured again
     // at the current transforms, along the last axis and along the line between the bodies'
     // origins, and when neither clears the threshold, along GJK's separating axis. Convex shapes
     // only.
-    // `dispatcher`: the pair's (its contact breaking threshold mode decides the pads).
     bool apart(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b,
-               const btPersistentManifold& manifold, const btDispatcher* dispatcher, btScalar reach = 0);
+               const btPersistentManifold& manifold, btScalar reach = 0);
 
 private:
     bool valid_ = false;

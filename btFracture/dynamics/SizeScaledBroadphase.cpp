@@ -24,7 +24,7 @@ void SizeScaledBroadphase::setAabb(btBroadphaseProxy* absproxy, const btVector3&
                                    const btVector3& aabbMax, btDispatcher* dispatcher) {
     auto* proxy = static_cast<btDbvtProxy*>(absproxy);
     const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
-    const btScalar pad = object ? broadphasePad(*object, dispatcher) : gContactBreakingThreshold;
+    const btScalar pad = object ? broadphasePad(*object) : gContactBreakingThreshold;
     const btVector3 extent = aabbMax - aabbMin - btVector3(1, 1, 1) * (2 * pad);
     const btScalar margin = fraction_ * btMax(extent[extent.maxAxis()], btScalar(0));
     const bool fixedSet = proxy->stage == STAGECOUNT;

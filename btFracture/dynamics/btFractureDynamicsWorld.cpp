@@ -412,21 +412,25 @@ void btFractureDynamicsWorld::setEnergyAuditSteps(int steps) {
 
 void btFractureDynamicsWorld::updateAabbs() {
     BT_PROFILE("updateAabbs");
+    const bool relativeThresholds = usesRelativeThresholds(m_dispatcher1);
     for (int i = 0; i < m_collisionObjects.size(); ++i) {
         btCollisionObject* object = m_collisionObjects[i];
         if (!(m_forceUpdateAllAabbs || object->isActive())) continue;
-        if (!btFractureRigidBody::upcast(object)) {
+        btFractureRigidBody* body = btFractureRigidBody::upcast(object);
+        if (!body) {
             updateSingleAabb(object);
             continue;
         }
         btVector3 aabbMin, aabbMax;
-        paddedAabb(*object, getDispatchInfo().m_useContinuous, broadphasePad(*object, m_dispatcher1), aabbMin,
-                   aabbMax);
-        // Bullet's guard against a runaway body (updateSingleAabb).
+        const btScalar pad = padFor(*object, relativeThresholds);
+        paddedAabb(*object, getDispatchInfo().m_useContinuous, pad, aabbMin, aabbMax);
+        // Bullet's guard against a runaway body (updateSingleAabb), with Bullet's pad.
         if (!object->isStaticObject() && !((aabbMax - aabbMin).length2() < btScalar(1e12))) {
+            body->broadphasePad_ = gContactBreakingThreshold;
             updateSingleAabb(object);
             continue;
         }
+        body->broadphasePad_ = pad;
         m_broadphasePairCache->setAabb(object->getBroadphaseHandle(), aabbMin, aabbMax, m_dispatcher1);
     }
 }

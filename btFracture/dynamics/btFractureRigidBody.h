@@ -19,6 +19,7 @@
 #include <btFracture/dynamics/FractureBodySettings.h>
 #include <btFracture/dynamics/FractureState.h>
 
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
 #include <Eigen/Core>
@@ -104,6 +105,10 @@ public:
     void setFractureState(std::unique_ptr<FractureState> state) { state_ = std::move(state); }
     std::unique_ptr<FractureState> releaseFractureState() { return std::move(state_); }
 
+    // The pad of this body's broadphase box [m], set by btFractureDynamicsWorld with the box
+    // (dynamics/ContactPad); gContactBreakingThreshold, Bullet's pad, until then.
+    btScalar broadphasePad() const { return broadphasePad_; }
+
 private:
     friend class btFractureDynamicsWorld;
     struct Prepared;
@@ -124,9 +129,10 @@ private:
     std::vector<double> vertexCurvature_;
 
     // Scratch of btFractureDynamicsWorld's step hook (no allocation per step).
-    std::uint64_t hookStamp_ = 0;   // step in which impulseSum_ was last reset
-    double impulseSum_ = 0.0;       // summed normal impulse of that step [N s]
-    bool inFractureWorld_ = false;  // counted by a btFractureDynamicsWorld
+    std::uint64_t hookStamp_ = 0;                         // step in which impulseSum_ was last reset
+    double impulseSum_ = 0.0;                             // summed normal impulse of that step [N s]
+    bool inFractureWorld_ = false;                        // counted by a btFractureDynamicsWorld
+    btScalar broadphasePad_ = gContactBreakingThreshold;  // pad of the box last set (ContactPad) [m]
 };
 
 }  // namespace btfracture

@@ -11,6 +11,8 @@
 #include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
+#include "../support/BroadphaseBoxes.h"
+
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -20,6 +22,7 @@
 #include <vector>
 
 using namespace btfracture;
+using btfracture::test::boxesOverlap;
 
 namespace {
 
@@ -69,12 +72,6 @@ btVector3 leafMin(const btRigidBody& b) {
 }
 btVector3 leafMax(const btRigidBody& b) {
     return static_cast<const btDbvtProxy*>(b.getBroadphaseHandle())->leaf->volume.Maxs();
-}
-
-bool boxesOverlap(const btBroadphaseProxy& a, const btBroadphaseProxy& b) {
-    for (int k = 0; k < 3; ++k)
-        if (a.m_aabbMin[k] > b.m_aabbMax[k] || b.m_aabbMin[k] > a.m_aabbMax[k]) return false;
-    return true;
 }
 
 // Steps both drifts and asserts every leaf of `scaled` to be that of `bullet`, bit for bit.
