@@ -66,6 +66,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <limits>
 #include <map>
 #include <string>
@@ -174,9 +175,7 @@ double zone(const char* name) {
     return found == zones.seconds.end() ? 0.0 : found->second;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
     std::string file = std::string(BTFRACTURE_MESH_DIR) + "/../scenes/column_bunny.json";
     bool defaultScene = true, sleeping = false, profile = true;
     int steps = -1, hullVertices = -1, bulletLeavesUntil = 0;
@@ -356,4 +355,15 @@ int main(int argc, char** argv) {
                     count > 0 ? 1e6 * zone(sweep) / double(count) : 0.0);
     }
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {  // a scene or mesh that cannot be read, named in the message
+        std::fprintf(stderr, "bench_rigid_fragments: %s\n", e.what());
+        return 1;
+    }
 }
