@@ -32,6 +32,7 @@ std::unique_ptr<btDiscreteDynamicsWorld> FractureSceneWorldFactory::createWorld(
     auto engine = std::make_unique<BemFractureEngine>(settings);
     if (cutObserver_) engine->setCutObserver(cutObserver_);
     world->setFractureEngine(std::move(engine));
+    world->setFragmentSleeping(scene.effects.fragmentSleeping);
     return world;
 }
 

@@ -255,7 +255,8 @@ private:
     void effects(const Json& value, const std::string& path, Scene& scene) const {
         requireObject(value, path, "an object");
         allowOnly(value, path,
-                  {"outputs", "seed", "crack_cut", "idle_matrix_budget_mb", "surface_seeds", "fracture"});
+                  {"outputs", "seed", "crack_cut", "idle_matrix_budget_mb", "surface_seeds",
+                   "fragment_sleeping", "fracture"});
         if (value.contains("outputs")) {
             const Json& list = value["outputs"];
             const std::string lpath = child(path, "outputs");
@@ -286,6 +287,9 @@ private:
                             "a number of megabytes >= 0");
         if (value.contains("surface_seeds"))
             scene.effects.surfaceSeeds = boolean(value["surface_seeds"], child(path, "surface_seeds"));
+        if (value.contains("fragment_sleeping"))
+            scene.effects.fragmentSleeping =
+                boolean(value["fragment_sleeping"], child(path, "fragment_sleeping"));
         if (value.contains("fracture")) {
             const Json& fracture = value["fracture"];
             const std::string fpath = child(path, "fracture");

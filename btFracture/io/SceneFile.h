@@ -125,6 +125,9 @@ struct SceneEffects {
     double idleMatrixBudgetMB = BemFractureEngineSettings().idleMatrixBudgetMB;
     // FULL seeds surface-breaking cracks (CrackSettings::surfaceSeeds).
     bool surfaceSeeds = BemFractureEngineSettings().fracture.surfaceSeeds;
+    // Fragments sleep by their size in islands of touching bodies
+    // (btFractureDynamicsWorld::setFragmentSleeping); off: Bullet's thresholds and islands.
+    bool fragmentSleeping = false;
 };
 
 // Settings of one run that do not belong to the scene file (command line).

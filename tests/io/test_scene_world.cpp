@@ -247,7 +247,7 @@ TEST(SceneWorld, KinematicSleepingFrictionRestitution) {
     EXPECT_EQ(lamp.getActivationState(), ISLAND_SLEEPING);
 }
 
-// The scene's engine-wide effects reach the fracture engine the factory makes.
+// The scene's engine-wide effects reach the fracture engine and world the factory makes.
 TEST(SceneWorld, FractureFactoryPassesTheEngineEffects) {
     const auto engineOf = [](SceneWorld& world) {
         const auto* fractureWorld = dynamic_cast<const btFractureDynamicsWorld*>(&world.world());
@@ -261,7 +261,8 @@ TEST(SceneWorld, FractureFactoryPassesTheEngineEffects) {
     SceneWorld plain(sceneOf("{" + bodies + R"(, "effects": {"fracture": {"slab": true}}})"), factory);
     SceneWorld set(sceneOf("{" + bodies +
                            R"(, "effects": {"surface_seeds": true, "idle_matrix_budget_mb": 0,
-                                                  "crack_cut": "coarse_sheet", "fracture": {"slab": true}}})"),
+                                                  "crack_cut": "coarse_sheet", "fragment_sleeping": true,
+                                                  "fracture": {"slab": true}}})"),
                    factory);
     ASSERT_NE(engineOf(plain), nullptr);
     ASSERT_NE(engineOf(set), nullptr);
@@ -271,4 +272,9 @@ TEST(SceneWorld, FractureFactoryPassesTheEngineEffects) {
     EXPECT_TRUE(engineOf(set)->settings().fracture.surfaceSeeds);
     EXPECT_EQ(engineOf(set)->settings().idleMatrixBudgetMB, 0.0);
     EXPECT_FALSE(engineOf(set)->settings().voxelFronts);
+    const auto sleepingOf = [](SceneWorld& world) {
+        return dynamic_cast<const btFractureDynamicsWorld&>(world.world()).fragmentSleepingEnabled();
+    };
+    EXPECT_FALSE(sleepingOf(plain));
+    EXPECT_TRUE(sleepingOf(set));
 }
