@@ -26,8 +26,9 @@ bool usesRelativeThresholds(const btDispatcher* dispatcher);
 // gContactBreakingThreshold. The world calls it once per body and box update.
 btScalar padFor(const btCollisionObject& object, bool relativeThresholds);
 
-// The pad of the box `object` has in the broadphase [m]: the one the world stored with the box
-// for a btFractureRigidBody, gContactBreakingThreshold for other bodies.
+// The pad of the box `object` has in the broadphase [m], at most: the one the world stored with
+// the box for a btFractureRigidBody (0 before the world's first box update), Bullet's
+// gContactBreakingThreshold for other bodies.
 btScalar broadphasePad(const btCollisionObject& object);
 
 // The box btCollisionWorld::updateSingleAabb gives `object` with `pad` instead of

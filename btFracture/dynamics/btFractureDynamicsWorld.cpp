@@ -323,7 +323,10 @@ bool btFractureDynamicsWorld::ownsBody(const btCollisionObject* object) const {
 }
 
 void btFractureDynamicsWorld::noteAdded(btRigidBody* body) {
-    if (btFractureRigidBody* f = btFractureRigidBody::upcast(body); f && !f->inFractureWorld_) {
+    btFractureRigidBody* f = btFractureRigidBody::upcast(body);
+    if (!f) return;
+    f->broadphasePad_ = 0;  // the box Bullet made on adding the body has none
+    if (!f->inFractureWorld_) {
         f->inFractureWorld_ = true;
         ++fractureBodies_;
     }

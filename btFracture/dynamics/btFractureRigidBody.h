@@ -19,7 +19,6 @@
 #include <btFracture/dynamics/FractureBodySettings.h>
 #include <btFracture/dynamics/FractureState.h>
 
-#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
 #include <Eigen/Core>
@@ -105,8 +104,9 @@ public:
     void setFractureState(std::unique_ptr<FractureState> state) { state_ = std::move(state); }
     std::unique_ptr<FractureState> releaseFractureState() { return std::move(state_); }
 
-    // The pad of this body's broadphase box [m], set by btFractureDynamicsWorld with the box
-    // (dynamics/ContactPad); gContactBreakingThreshold, Bullet's pad, until then.
+    // The pad of this body's broadphase box [m] as btFractureDynamicsWorld set it with the box
+    // (dynamics/ContactPad); 0 until it does (the box Bullet makes when a body is added has
+    // none). Never more than the box's pad.
     btScalar broadphasePad() const { return broadphasePad_; }
 
 private:
@@ -129,10 +129,10 @@ private:
     std::vector<double> vertexCurvature_;
 
     // Scratch of btFractureDynamicsWorld's step hook (no allocation per step).
-    std::uint64_t hookStamp_ = 0;                         // step in which impulseSum_ was last reset
-    double impulseSum_ = 0.0;                             // summed normal impulse of that step [N s]
-    bool inFractureWorld_ = false;                        // counted by a btFractureDynamicsWorld
-    btScalar broadphasePad_ = gContactBreakingThreshold;  // pad of the box last set (ContactPad) [m]
+    std::uint64_t hookStamp_ = 0;   // step in which impulseSum_ was last reset
+    double impulseSum_ = 0.0;       // summed normal impulse of that step [N s]
+    bool inFractureWorld_ = false;  // counted by a btFractureDynamicsWorld
+    btScalar broadphasePad_ = 0;    // pad of the box last set (ContactPad) [m]
 };
 
 }  // namespace btfracture
