@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Zlib
 #pragma once
-// Whether two bodies' broadphase boxes overlap, by the broadphase's own test (btDbvtBroadphase
-// pairs exactly the bodies whose boxes pass it).
+// Whether two bodies' broadphase boxes overlap (the proxies' boxes, padded but without the
+// margin btDbvtBroadphase adds to its tree leaves, by which it pairs bodies), by Bullet's own box
+// test (btAabbUtil2.h).
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <LinearMath/btAabbUtil2.h>
 
