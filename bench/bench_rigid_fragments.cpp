@@ -23,8 +23,8 @@
 //                              [--trapped-every N]
 //   --hull-vertices N  collision hull corner budget of the scene's breakable bodies and their
 //                      fragments (0: every corner; default: CollisionShapeOptions)
-//   --sleeping         fragment sleeping on (btFractureDynamicsWorld::setFragmentSleeping; off by
-//                      default: fragments keep their parent's thresholds, Bullet's 2 s rule)
+//   --sleeping         fragment sleeping on (btFractureDynamicsWorld::setFragmentSleeping) even
+//                      where the scene's effects.fragment_sleeping leaves it off
 //   --bullet-leaves-until STEP
 //                      broadphase leaves widened by Bullet's 5 cm before STEP, by the scene
 //                      world's SizeScaledBroadphase fraction from STEP on: both leaves from one
