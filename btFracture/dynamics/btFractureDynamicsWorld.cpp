@@ -770,6 +770,9 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
     for (Event& event : events)
         for (FractureListener* listener : listeners_)
             listener->onFractureEvent(*event.parent, event.fragments, event.info);
+    // A broken parent has left the world for good: its fracture state (BEM, crack system, level
+    // set; hundreds of MB for a large body) goes now, not when the application deletes the body.
+    for (Event& event : events) event.parent->releaseFractureState();
     retired.clear();
 
     replaying_ = true;

@@ -27,6 +27,7 @@ struct SwapProbe : FractureListener {
         ++events;
         atSwap = probe(world);
         parentInWorld = parent.isInWorld();
+        parentHadState = parent.fractureState() != nullptr;
         fragmentCount = static_cast<int>(fragments.size());
         lastInfo = info;
     }
@@ -34,6 +35,7 @@ struct SwapProbe : FractureListener {
     int events = 0;
     WorldProbe atSwap;
     bool parentInWorld = true;
+    bool parentHadState = false;
     int fragmentCount = 0;
     FractureEventInfo lastInfo;
 };
@@ -60,6 +62,10 @@ TEST(FractureWorld, BallBreaksSlabAboveThreshold) {
     EXPECT_EQ(listener.fragmentCount, 2);
     EXPECT_FALSE(listener.parentInWorld);
     EXPECT_FALSE(scene.slab->isInWorld());
+    // Listeners still see the parent's state; then it is released (the application owns the
+    // slab, which breaks no further: its BEM would only hold memory).
+    EXPECT_TRUE(listener.parentHadState);
+    EXPECT_EQ(scene.slab->fractureState(), nullptr);
     const auto fragments = scene.fragments();
     ASSERT_EQ(fragments.size(), 2u);
     for (btFractureRigidBody* f : fragments) {
