@@ -33,9 +33,9 @@ public:
     // step is replayed. Ownership: if the application added `parent`, it is the application's to
     // delete (after this call returns); if the world created it (an earlier fragment), the world
     // deletes it after all listeners ran. Fragments are owned by the world while they are in it
-    // (see btFractureDynamicsWorld). When the listeners have run, the parent's fracture state
-    // (btFractureRigidBody::fractureState: BEM, cracks, level set) is released: the parent breaks
-    // no further (added to a world again, it would start without cracks).
+    // (see btFractureDynamicsWorld). The parent's fracture state (btFractureRigidBody::
+    // fractureState: BEM, cracks, level set) is released before this call: the parent breaks no
+    // further (added to a world again, it would start without cracks).
     virtual void onFractureEvent(btFractureRigidBody& parent,
                                  const std::vector<btFractureRigidBody*>& fragments,
                                  const FractureEventInfo& info) = 0;

@@ -759,6 +759,9 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
             owned_.erase(owned);
         }
         removeRigidBody(parent);
+        // The parent has left the world for good: its fracture state (BEM, crack system, level
+        // set; hundreds of MB for a large body) goes now, not when the application deletes it.
+        parent->releaseFractureState();
         for (btFractureRigidBody* f : event.fragments) {
             addRigidBody(f, group, mask);
             f->applyGravity();
@@ -770,9 +773,6 @@ void btFractureDynamicsWorld::runFractureEvents(btScalar timeStep) {
     for (Event& event : events)
         for (FractureListener* listener : listeners_)
             listener->onFractureEvent(*event.parent, event.fragments, event.info);
-    // A broken parent has left the world for good: its fracture state (BEM, crack system, level
-    // set; hundreds of MB for a large body) goes now, not when the application deletes the body.
-    for (Event& event : events) event.parent->releaseFractureState();
     retired.clear();
 
     replaying_ = true;

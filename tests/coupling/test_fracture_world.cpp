@@ -62,9 +62,9 @@ TEST(FractureWorld, BallBreaksSlabAboveThreshold) {
     EXPECT_EQ(listener.fragmentCount, 2);
     EXPECT_FALSE(listener.parentInWorld);
     EXPECT_FALSE(scene.slab->isInWorld());
-    // Listeners still see the parent's state; then it is released (the application owns the
-    // slab, which breaks no further: its BEM would only hold memory).
-    EXPECT_TRUE(listener.parentHadState);
+    // The application owns the slab, which breaks no further: its state (BEM, level set) is
+    // released before the listeners see the event, not kept until the slab is deleted.
+    EXPECT_FALSE(listener.parentHadState);
     EXPECT_EQ(scene.slab->fractureState(), nullptr);
     const auto fragments = scene.fragments();
     ASSERT_EQ(fragments.size(), 2u);
