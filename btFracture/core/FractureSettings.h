@@ -41,11 +41,10 @@ struct FractureMethodSettings {
     // independent of the BEM surface (FractureRB's crack mesh size). 0: relative to the BEM mesh
     // (seeds: the seeding triangle's diameter; fronts: the mean BEM triangle diameter).
     double crackElementSize = 0.0;
-    // EST (and HYBRID after its switch): a step's SIFs are scaled down (logged) so that the crack
-    // area the step adds releases no more than the energy the event's load can deliver
-    // (SifEstimator.h, energyBoundScale and deliverableEnergy). Scene key
-    // effects.fracture.<body>.energy_bound.
-    bool estimatorEnergyBound = true;
+    // FULL and EST: a step's SIFs are scaled down (logged) so that the crack area the step adds
+    // releases no more than the energy the event's load can deliver (SifEstimator.h,
+    // energyBoundScale and deliverableEnergy). Scene key effects.fracture.<body>.energy_bound.
+    bool energyBound = true;
     // Throws btfracture::Error "<where>: ..." naming the field and value.
     void validate(const std::string& where) const;
 };

@@ -100,6 +100,7 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
     if (active_ == FractureMethod::Full) {
         std::vector<FrontSifs> all = displacementCorrelation(cracks_, solvedOpenings_, m);
         all.erase(std::remove_if(all.begin(), all.end(), skip), all.end());
+        boundByEnergy(all);
         return all;
     }
     // EST: frames from the crack geometry, SIFs from the surface-only local stress (§4.2).
@@ -146,23 +147,36 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
         e.spacing = f.spacing;
         out.push_back(e);
     }
-    // With estimatorEnergyBound, the step's new crack releases at most the strain energy the
-    // tractions store, or what the contacts deliver where that is less (energyBoundScale,
-    // deliverableEnergy); both are fixed for the event.
+    boundByEnergy(out);
+    return out;
+}
+
+// With energyBound, the step's new crack releases at most what the contacts deliver
+// (energyBoundScale; fixed for the event). EST: also at most the strain energy its crack-free
+// tractions store (deliverableEnergy). FULL's own solution holds its release to the cracked
+// body's energy, but the quasi-static load lets a part that is all but cut off (S nearly
+// singular, its sign set by rounding) release far more than the impact brought.
+void FractureSolver::boundByEnergy(std::vector<FrontSifs>& out) {
+    const Material& m = field_.material();
     if (strainEnergy_ < 0.0) {
+        const bool full = active_ == FractureMethod::Full;
+        if (full) crackFree_ = solver_.displacements(tractions_);
         strainEnergy_ = solver_.strainEnergy(tractions_, crackFree_);
         const Eigen::VectorXd& resting = contactEnergy_.restingTractions;
-        const double restingEnergy = contactEnergy_.kinetic < strainEnergy_ && resting.size() > 0
-                                         ? solver_.strainEnergy(resting, solver_.displacements(resting))
-                                         : 0.0;
-        releasable_ = deliverableEnergy(strainEnergy_, contactEnergy_.kinetic, restingEnergy);
-        if (settings_.estimatorEnergyBound && releasable_ < strainEnergy_)
+        const double kinetic = contactEnergy_.kinetic;
+        const bool restingCounts =
+            (full ? std::isfinite(kinetic) : kinetic < strainEnergy_) && resting.size() > 0;
+        const double restingEnergy =
+            restingCounts ? solver_.strainEnergy(resting, solver_.displacements(resting)) : 0.0;
+        releasable_ =
+            full ? kinetic + restingEnergy : deliverableEnergy(strainEnergy_, kinetic, restingEnergy);
+        if (settings_.energyBound && releasable_ < strainEnergy_)
             logf(LogLevel::Info, "fracture: the tractions store ", strainEnergy_,
                  " J, the contacts deliver at most ", releasable_, " J (impacts ", contactEnergy_.kinetic,
-                 " J, resting load ", restingEnergy, " J); EST's energy bound uses the latter");
+                 " J, resting load ", restingEnergy, " J); the energy bound uses the latter");
     }
     energyScale_ = 1.0;
-    if (!settings_.estimatorEnergyBound) return out;
+    if (!settings_.energyBound) return;
     std::vector<FrontSifs> moving;
     std::vector<double> toughness;
     for (const FrontSifs& e : out)
@@ -175,7 +189,6 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
                          settings_.frontEdgeLength * elementSize_, settings_.minimumSpeed, releasable_);
     if (energyScale_ < 1.0)
         for (FrontSifs& e : out) e.KI *= energyScale_, e.KII *= energyScale_, e.KIII *= energyScale_;
-    return out;
 }
 
 // §4.2's crack area A per sheet, counting only the triangles inside the body: a sheet a fragment
@@ -215,9 +228,10 @@ FractureStepRecord FractureSolver::step(int index) {
              kMaxGeometryFactor / settings_.estimatorGeometryFactor, " times the crack-free surface peak ",
              peakStress_, " Pa (K <= ", kMaxGeometryFactor,
              " sigma_peak sqrt(pi a)); EST used that bound there");
-    record.energyScale = active_ == FractureMethod::Estimated ? energyScale_ : 1.0;
+    record.energyScale = energyScale_;
     if (record.energyScale < 1.0)
-        logf(LogLevel::Info, "fracture: step ", index, ": EST's SIFs scaled by ", record.energyScale,
+        logf(LogLevel::Info, "fracture: step ", index, ": ", active_ == FractureMethod::Full ? "FULL" : "EST",
+             "'s SIFs scaled by ", record.energyScale,
              " so that the step's new crack releases no more than the energy of the load, ", releasable_,
              " J");
     if (record.gainLimitedNodes > 0)

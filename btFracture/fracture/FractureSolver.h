@@ -32,7 +32,7 @@ struct FractureStepRecord {
     double maxLoadRatio = 0.0;   // max K_eff / K_c over the front before the step
     int gainLimitedNodes = 0;    // EST: fronts whose SIFs estimatorUpdateGainLimit scaled down
     int stressBoundedNodes = 0;  // EST: fronts whose local stress boundStress scaled down
-    double energyScale = 1.0;    // EST: factor energyBoundScale put on every SIF (1: none)
+    double energyScale = 1.0;    // factor energyBoundScale put on every SIF (1: none)
     double sifSeconds = 0.0, growthSeconds = 0.0;
 };
 
@@ -43,7 +43,7 @@ struct FractureEventReport {
     std::vector<FractureStepRecord> steps;
 };
 
-// What an event's contacts can deliver, for EST's energy bound (deliverableEnergy): the impacts'
+// What an event's contacts can deliver, for the energy bound (deliverableEnergy): the impacts'
 // kinetic energy of approach, sum 1/2 m* v^2 [J] (infinite: not known, the tractions' strain
 // energy stands), and the tractions of its resting contacts (3m [Pa], balanced; empty: none).
 struct ContactEnergy {
@@ -80,7 +80,7 @@ public:
     int gainLimitedNodes() const { return gainLimited_; }
     // EST: fronts whose local stress the last frontSifs() call bounded (boundStress).
     int stressBoundedNodes() const { return stressBounded_; }
-    // EST: the factor the last frontSifs() call put on every SIF (energyBoundScale; 1: none), the
+    // The factor the last frontSifs() call put on every SIF (energyBoundScale; 1: none), the
     // strain energy of the event's tractions [J] and the part of it the bound let the fronts
     // release (deliverableEnergy) [J].
     double energyScale() const { return energyScale_; }
@@ -114,6 +114,7 @@ public:
     Eigen::VectorXd nodalOpenings() const;
 
 private:
+    void boundByEnergy(std::vector<FrontSifs>& sifs);  // FractureMethodSettings::energyBound
     void updateFrontState(const std::vector<FrontSifs>& sifs, const std::map<int, double>& advanced);
     void switchToEstimator();
     void recordLeavingOpenings(const std::vector<int>& fresh, const Eigen::VectorXd& cod);

@@ -41,6 +41,9 @@ namespace {
 using namespace levelset;
 using openvdb::BoolGrid;
 
+// Largest fragment volume over its parent's before a cut counts as degenerate.
+constexpr double kMaxFragmentToParentVolume = 2.0;
+
 // Where a crack voxel looks for the fragment on either side of its sheet [voxels from the sheet]:
 // just past the slab's half-width (0.85 voxel: a chip one voxel thick between two slabs is found
 // there), beyond the slab, and where sheets cross or run close, beyond the neighbour's slab.
@@ -286,6 +289,12 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings,
         Fragment f;
         f.name = body.name + "/" + std::to_string(fragments.size());
         f.mass = integrateMass(*phi);
+        // A piece cannot outweigh its parent beyond the level set's voxel tolerance: more than
+        // twice its volume means the cut's sweep left the body (meshing it could exhaust memory).
+        if (f.mass.volume > kMaxFragmentToParentVolume * body.mass.volume)
+            throw Error(f.name + ": fragment of " + std::to_string(f.mass.volume) + " m^3 from a body of " +
+                        std::to_string(body.mass.volume) +
+                        " m^3: the crack cut reaches outside the body; fracture abandoned");
         if (!(f.mass.volume > settings.dustMaxFraction * body.originalVolume)) {
             dustVolume += std::max(0.0, f.mass.volume);
             ++dustCount;

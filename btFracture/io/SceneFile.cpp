@@ -337,12 +337,8 @@ private:
                          "\")");
             f.hybridElementThreshold = integer(value["hybrid_threshold"], child(path, "hybrid_threshold"), 1);
         }
-        if (value.contains("energy_bound")) {
-            if (f.method == FractureMethod::Full)
-                fail(child(path, "energy_bound"),
-                     "applies to methods \"est\" and \"hybrid\" only (method is \"full\")");
-            f.estimatorEnergyBound = boolean(value["energy_bound"], child(path, "energy_bound"));
-        }
+        if (value.contains("energy_bound"))
+            f.energyBound = boolean(value["energy_bound"], child(path, "energy_bound"));
         if (value.contains("refracture_depth"))
             f.maxRefractureDepth = integer(value["refracture_depth"], child(path, "refracture_depth"), 0, 20);
         if (value.contains("impulse_threshold"))

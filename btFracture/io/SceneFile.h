@@ -81,7 +81,7 @@ struct SceneBody {
     SceneMotion motion = SceneMotion::Dynamic;
     double friction = 0.5;     // Bullet's friction coefficient [-]
     double restitution = 0.0;  // Bullet's restitution [-]
-    // From effects.fracture.<name> (fracturable, method, hybridElementThreshold, estimatorEnergyBound,
+    // From effects.fracture.<name> (fracturable, method, hybridElementThreshold, energyBound,
     // impulseThreshold, maxRefractureDepth, materialNoise: amplitude, wavelength and the body's
     // seed, which the runner combines with SceneEffects::seed) and the body's "resolution"
     // (bemTriangleTarget, collisionTriangleTarget, voxelSize, crackElementSize).

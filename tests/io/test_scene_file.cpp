@@ -105,7 +105,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_DOUBLE_EQ(pane.fracture.crackElementSize, 0.01);
     EXPECT_TRUE(pane.fracture.fracturable);
     EXPECT_EQ(pane.fracture.method, FractureMethod::Hybrid);
-    EXPECT_FALSE(pane.fracture.estimatorEnergyBound);
+    EXPECT_FALSE(pane.fracture.energyBound);
     EXPECT_EQ(pane.fracture.hybridElementThreshold, 3000);
     EXPECT_EQ(pane.fracture.maxRefractureDepth, 2);
     EXPECT_DOUBLE_EQ(pane.fracture.impulseThreshold, 0.5);
@@ -115,7 +115,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_TRUE(rock.fracture.fracturable);
     EXPECT_EQ(rock.fracture.method, FractureMethod::Estimated);
     EXPECT_EQ(rock.fracture.maxRefractureDepth, 3);         // default
-    EXPECT_TRUE(rock.fracture.estimatorEnergyBound);        // default
+    EXPECT_TRUE(rock.fracture.energyBound);                 // default
     EXPECT_DOUBLE_EQ(rock.fracture.crackElementSize, 0.0);  // default: relative to the BEM mesh
     EXPECT_EQ(rock.motion, SceneMotion::Sleeping);
     EXPECT_DOUBLE_EQ(rock.restitution, 0.25);
@@ -173,8 +173,6 @@ TEST(SceneFile, BadEffectsNameTheirPath) {
          R"(test.json: effects.fracture.ball.method: expected "full", "est" or "hybrid", got "fast")"},
         {R"("effects": {"fracture": {"ball": {"method": "full", "hybrid_threshold": 10}}})",
          R"(test.json: effects.fracture.ball.hybrid_threshold: applies to method "hybrid" only (method is "full"))"},
-        {R"("effects": {"fracture": {"ball": {"method": "full", "energy_bound": true}}})",
-         R"(test.json: effects.fracture.ball.energy_bound: applies to methods "est" and "hybrid" only (method is "full"))"},
         {R"("effects": {"fracture": {"ball": {"energy_bound": 1}}})",
          "test.json: effects.fracture.ball.energy_bound: expected true or false, got 1"},
         {R"("effects": {"fracture": {"ball": {"refracture_depth": 99}}})",
