@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace btfracture {
@@ -162,14 +163,12 @@ void FractureSolver::boundByEnergy(std::vector<FrontSifs>& out) {
         const bool full = active_ == FractureMethod::Full;
         if (full) crackFree_ = solver_.displacements(tractions_);
         strainEnergy_ = solver_.strainEnergy(tractions_, crackFree_);
+        const double cap = full ? std::numeric_limits<double>::infinity() : strainEnergy_;
         const Eigen::VectorXd& resting = contactEnergy_.restingTractions;
-        const double kinetic = contactEnergy_.kinetic;
-        const bool restingCounts =
-            (full ? std::isfinite(kinetic) : kinetic < strainEnergy_) && resting.size() > 0;
-        const double restingEnergy =
-            restingCounts ? solver_.strainEnergy(resting, solver_.displacements(resting)) : 0.0;
-        releasable_ =
-            full ? kinetic + restingEnergy : deliverableEnergy(strainEnergy_, kinetic, restingEnergy);
+        const double restingEnergy = contactEnergy_.kinetic < cap && resting.size() > 0
+                                         ? solver_.strainEnergy(resting, solver_.displacements(resting))
+                                         : 0.0;
+        releasable_ = deliverableEnergy(cap, contactEnergy_.kinetic, restingEnergy);
         if (settings_.energyBound && releasable_ < strainEnergy_)
             logf(LogLevel::Info, "fracture: the tractions store ", strainEnergy_,
                  " J, the contacts deliver at most ", releasable_, " J (impacts ", contactEnergy_.kinetic,

@@ -44,8 +44,9 @@ struct FractureEventReport {
 };
 
 // What an event's contacts can deliver, for the energy bound (deliverableEnergy): the impacts'
-// kinetic energy of approach, sum 1/2 m* v^2 [J] (infinite: not known, the tractions' strain
-// energy stands), and the tractions of its resting contacts (3m [Pa], balanced; empty: none).
+// kinetic energy of approach, sum 1/2 m* v^2 [J] (infinite: not known; EST then keeps the
+// tractions' strain energy, FULL is unbounded), and the tractions of its resting contacts (3m [Pa], balanced;
+// empty: none).
 struct ContactEnergy {
     double kinetic = std::numeric_limits<double>::infinity();
     Eigen::VectorXd restingTractions;
@@ -81,7 +82,7 @@ public:
     // EST: fronts whose local stress the last frontSifs() call bounded (boundStress).
     int stressBoundedNodes() const { return stressBounded_; }
     // The factor the last frontSifs() call put on every SIF (energyBoundScale; 1: none), the
-    // strain energy of the event's tractions [J] and the part of it the bound let the fronts
+    // strain energy of the event's crack-free tractions [J] and what the bound lets a step
     // release (deliverableEnergy) [J].
     double energyScale() const { return energyScale_; }
     double strainEnergy() const { return strainEnergy_; }
