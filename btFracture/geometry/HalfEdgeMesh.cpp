@@ -157,6 +157,9 @@ bool HalfEdgeMesh::adjacent(int u, int v) const {
 
 bool HalfEdgeMesh::collapseKeepsManifold(int h) const {
     if (liveVertices_ <= 4) return false;
+    // The two apexes lose a neighbour: at valence 3 they would be left with two faces back to
+    // back (a tetrahedron among other components passes the link condition and the count).
+    if (valence(apex(h)) <= 3 || valence(apex(twin(h))) <= 3) return false;
     const int a = origin(h), b = target(h);
     int shared = 0;
     forEachOutgoing(a, [&](int g) {

@@ -90,7 +90,8 @@ public:
     };
 
     // Topology: a collapse of h is allowed when origin and target share exactly the two apex
-    // vertices as neighbours (link condition) and the mesh keeps more than 4 vertices.
+    // vertices as neighbours (link condition), both apexes keep at least three neighbours and the
+    // mesh keeps more than 4 vertices.
     bool collapseKeepsManifold(int h) const;
     // Faces around both ends of h after origin(h) and target(h) merge at p.
     EditPreview previewCollapse(int h, const Eigen::Vector3d& p) const;

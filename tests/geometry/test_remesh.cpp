@@ -434,6 +434,20 @@ TEST(HalfEdgeMesh, EditsKeepAClosedManifold) {
     EXPECT_EQ(static_cast<int>(out.vertices.size()), mesh.vertexCount());
 }
 
+// A tetrahedron beside another closed component (debris in a fragment's level-set mesh): the
+// mesh has more than 4 vertices and each tetrahedron edge passes the link condition, but a
+// collapse would leave two faces back to back whose vertices have two neighbours each (a later
+// edit then corrupted the half-edge rings: a heap overflow in the stability suite).
+TEST(HalfEdgeMesh, TetrahedronBesideAnotherComponentIsNotCollapsed) {
+    TriangleMesh two;
+    two.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}, {5, 0, 1}};
+    two.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {4, 6, 5}, {4, 5, 7}, {4, 7, 6}, {5, 6, 7}};
+    const HalfEdgeMesh mesh(two);
+    ASSERT_EQ(mesh.vertexCount(), 8);
+    for (int h = 0; h < mesh.halfedgeSlots(); ++h)
+        EXPECT_FALSE(mesh.collapseKeepsManifold(h)) << "halfedge " << h;
+}
+
 TEST(HalfEdgeMesh, LinkConditionStopsTetrahedronCollapse) {
     TriangleMesh tetra;
     tetra.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
