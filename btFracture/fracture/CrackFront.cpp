@@ -63,6 +63,7 @@ FrontMarker between(const FrontMarker& a, const FrontMarker& b, double t) {
     m.free = a.free && b.free;
     m.home = t < 0.5 ? a.home : b.home;
     m.coarseNode = t < 0.5 ? a.coarseNode : b.coarseNode;
+    m.coarseTangent = t < 0.5 ? a.coarseTangent : b.coarseTangent;
     return m;
 }
 
@@ -291,6 +292,7 @@ FrontAdvanceResult CrackFronts::advance(const std::map<int, CoarseFront>& fronts
                 }
                 raw[i] = (1.0 - bestT) * advanceOf(bestEdge.first) + bestT * advanceOf(bestEdge.second);
                 m.coarseNode = bestT < 0.5 ? bestEdge.first : bestEdge.second;
+                m.coarseTangent = front.position.at(bestEdge.second) - front.position.at(bestEdge.first);
             }
             // Light smoothing of the steps: half own, a quarter from each active neighbour.
             const std::size_t n = chain.markers.size();
@@ -462,10 +464,13 @@ FrontAdvanceResult CrackFronts::sweep(std::map<int, std::vector<Steps>>& steps, 
                             const double mid = 0.5 * (lo + hi);
                             (queries.insideBody(p + mid * (q - p)) ? lo : hi) = mid;
                         }
-                        const SurfaceSlide slide = queries.surfaceNormal
-                                                       ? surfaceSlide(dir, chainTangent(chain, old, i),
-                                                                      queries.surfaceNormal(p + hi * (q - p)))
-                                                       : SurfaceSlide{};
+                        const SurfaceSlide slide =
+                            queries.surfaceNormal
+                                ? surfaceSlide(dir,
+                                               m.coarseTangent.norm() > 0.0 ? m.coarseTangent
+                                                                            : chainTangent(chain, old, i),
+                                               queries.surfaceNormal(p + hi * (q - p)))
+                                : SurfaceSlide{};
                         if (slide.slides) {
                             q = p + lo * (q - p);
                             s[i] = s[i].norm() * slide.along * slide.line;

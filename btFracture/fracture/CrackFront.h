@@ -8,7 +8,8 @@
 // coarseTargets). Markers are inserted and removed to keep neighbours 0.5 to 2 spacings apart,
 // the per-marker steps are lightly smoothed. A marker meeting the surface slides along it where
 // the coarse front would (SurfaceSlide.h: the ends of a through crack run along a thin body's
-// faces), else it stops for good there; it also stops when it enters a crack already cut into it
+// faces; the crack plane from its coarse front edge, FrontMarker::coarseTangent), else it stops
+// for good there; it also stops when it enters a crack already cut into it
 // (a marker outside the body since it was made, on a seed poking through the surface, follows the
 // coarse front freely until it enters the body). Sheets growing together (one event) pass
 // through each other as the coarse BEM sheets do
@@ -57,6 +58,9 @@ struct FrontMarker {
     bool free = false;      // outside the body since it was made (a seed poking through the surface)
     int home = -1;          // crack slab it started in (an id it may leave without stopping)
     int coarseNode = -1;    // nearest coarse front node (arrest feedback)
+    // Tangent of the nearest coarse front edge in the last advance (0: none yet): the crack plane a
+    // sliding marker keeps (SurfaceSlide), smooth where the marker polyline is not.
+    Eigen::Vector3d coarseTangent = Eigen::Vector3d::Zero();
 };
 
 struct MarkerChain {
