@@ -14,8 +14,8 @@
 //    types, with the count of pairs left without contact points (apart);
 //  - the CCD sweeps: Bullet's swept-sphere tests of the bodies that move more than their CCD
 //    motion threshold in a step, in integration and in the predictive contacts.
-// Prints METRIC rigid_ms_per_step_400_fragments (rigid ms per step of the default scene; the
-// scene's path instead of "400_fragments" for another scene), the rigid share of the step time,
+// Prints METRIC rigid_ms_per_step_demo (rigid ms per step of the default scene; the scene's name
+// instead of "demo" for another scene), the rigid share of the step time,
 // the bodies at the end and the per-phase times.
 //
 // Usage: bench_rigid_fragments [SCENE.json] [--steps N] [--hull-vertices N] [--sleeping]
@@ -291,7 +291,7 @@ int run(int argc, char** argv) {
             maxCorners = std::max(maxCorners, hull->getNumPoints());
         }
     }
-    const std::string tag = defaultScene ? std::string("400_fragments") : scene.name;
+    const std::string tag = defaultScene ? std::string("demo") : scene.name;
     const FractureStatistics& stats = fractureWorld->fractureStatistics();
     std::printf("scene %s: %d steps, %d fracture events, %zu bodies at the end (%d awake, %d asleep)\n",
                 file.c_str(), scene.world.steps, recorder.events(), world.bodies().size(), active, asleep);

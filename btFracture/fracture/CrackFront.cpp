@@ -45,16 +45,6 @@ std::int64_t cellKey(long x, long y, long z) {
     return (u(x) << 42) | (u(y) << 21) | u(z);
 }
 
-// Front tangent at marker i of a chain whose marker positions were `positions` (0 for a lone marker).
-Eigen::Vector3d chainTangent(const MarkerChain& chain, const std::vector<Eigen::Vector3d>& positions,
-                             std::size_t i) {
-    const std::size_t n = positions.size();
-    if (n < 2) return Eigen::Vector3d::Zero();
-    const std::size_t prev = chain.closed ? (i + n - 1) % n : (i > 0 ? i - 1 : i);
-    const std::size_t next = chain.closed ? (i + 1) % n : (i + 1 < n ? i + 1 : i);
-    return positions[next] - positions[prev];
-}
-
 FrontMarker between(const FrontMarker& a, const FrontMarker& b, double t) {
     FrontMarker m;
     m.position = (1.0 - t) * a.position + t * b.position;
@@ -132,6 +122,7 @@ void CrackFronts::addSheet(int sheet, const CoarseFront& front, const FrontQueri
                 FrontMarker m;
                 m.position = (1.0 - t) * pa + t * pb;
                 m.coarseNode = t < 0.5 ? a : b;
+                m.coarseTangent = pb - pa;
                 chain.markers.push_back(m);
             }
         }
@@ -139,6 +130,7 @@ void CrackFronts::addSheet(int sheet, const CoarseFront& front, const FrontQueri
             FrontMarker m;
             m.position = front.position.at(nodes.back());
             m.coarseNode = nodes.back();
+            if (nodes.size() > 1) m.coarseTangent = m.position - front.position.at(nodes[nodes.size() - 2]);
             chain.markers.push_back(m);
         }
         for (FrontMarker& m : chain.markers) {
@@ -466,10 +458,7 @@ FrontAdvanceResult CrackFronts::sweep(std::map<int, std::vector<Steps>>& steps, 
                         }
                         const SurfaceSlide slide =
                             queries.surfaceNormal
-                                ? surfaceSlide(dir,
-                                               m.coarseTangent.norm() > 0.0 ? m.coarseTangent
-                                                                            : chainTangent(chain, old, i),
-                                               queries.surfaceNormal(p + hi * (q - p)))
+                                ? surfaceSlide(dir, m.coarseTangent, queries.surfaceNormal(p + hi * (q - p)))
                                 : SurfaceSlide{};
                         if (slide.slides) {
                             q = p + lo * (q - p);

@@ -58,7 +58,8 @@ struct FrontMarker {
     bool free = false;      // outside the body since it was made (a seed poking through the surface)
     int home = -1;          // crack slab it started in (an id it may leave without stopping)
     int coarseNode = -1;    // nearest coarse front node (arrest feedback)
-    // Tangent of the nearest coarse front edge in the last advance (0: none yet): the crack plane a
+    // Tangent of the nearest coarse front edge in the last advance (before any: of the edge the
+    // marker was made on; 0 on a zero-length edge, where it cannot slide): the crack plane a
     // sliding marker keeps (SurfaceSlide), smooth where the marker polyline is not.
     Eigen::Vector3d coarseTangent = Eigen::Vector3d::Zero();
 };
