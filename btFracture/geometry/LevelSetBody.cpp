@@ -9,6 +9,7 @@
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/PortableMath.h>
+#include <btFracture/geometry/MeshDebris.h>
 #include <btFracture/geometry/MeshDecimation.h>
 #include <btFracture/geometry/internal/LevelSetGrids.h>
 
@@ -640,6 +641,10 @@ TriangleMesh LevelSetBody::collisionMesh(int targetTriangles) const {
     return collisionMeshFromGrid(*impl_->solid, targetTriangles, impl_->name + " (collision)", nullptr);
 }
 
+// Closed pieces of a BEM source below this fraction of the largest one's volume are debris of the
+// coarse level set (MeshDebris.h).
+constexpr double kDebrisVolumeFraction = 0.01;
+
 TriangleMesh LevelSetBody::bemSourceMesh(int targetTriangles, double voxelsPerEdge) const {
     const Impl& b = *impl_;
     const std::string name = b.name + " (BEM source)";
@@ -677,7 +682,13 @@ TriangleMesh LevelSetBody::bemSourceMesh(int targetTriangles, double voxelsPerEd
              " m); the BEM source keeps ", 100.0 * (volume + offset * coarseArea) / b.mass.volume,
              " % of the volume");
     TriangleMesh shifted = meshFromGrid(*coarse, name, 0.0, offset);
-    return shifted.triangles.size() >= 4 ? shifted : mesh;
+    TriangleMesh& source = shifted.triangles.size() >= 4 ? shifted : mesh;
+    const DroppedDebris debris = dropDebris(source, kDebrisVolumeFraction);
+    if (debris.pieces > 0)
+        logf(LogLevel::Info, name, ": ", debris.pieces, " closed pieces below ",
+             100.0 * kDebrisVolumeFraction, " % of the largest one's volume left out (", debris.volume,
+             " m^3 in all)");
+    return source;
 }
 
 void LevelSetBody::writeVdb(const std::string& path) const {

@@ -6,9 +6,11 @@
 #include "TestShapes.h"
 
 #include <btFracture/core/Error.h>
+#include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
 #include <btFracture/core/Timer.h>
 #include <btFracture/geometry/LevelSetBody.h>
+#include <btFracture/geometry/MeshDebris.h>
 #include <btFracture/geometry/Remesh.h>
 
 #include <gtest/gtest.h>
@@ -80,6 +82,38 @@ TEST(BemSource, CurvedFragmentsGetClosedIntersectionFreeBemMeshes) {
     EXPECT_GE(checked, 2);
     EXPECT_TRUE(std::any_of(pieces.begin(), pieces.end(),
                             [](const Fragment& f) { return !f.incompleteCracks.empty(); }));
+}
+
+// A coarse level set leaves islands and small voids beside a fragment's surface; a BEM source
+// keeps only the pieces of at least 1 % of the largest one's volume. Here: a 1 m box, a 5 cm box
+// outside it and a 5 cm cavity inside it (inward-facing) are reduced to the 1 m box; two equal
+// boxes are both kept (the BEM then rejects the mesh with its own error).
+TEST(BemSource, DebrisPiecesAreDropped) {
+    auto append = [](TriangleMesh& to, const TriangleMesh& from, bool inward) {
+        const int base = static_cast<int>(to.vertices.size());
+        to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
+        for (auto t : from.triangles) {
+            if (inward) std::swap(t[1], t[2]);
+            to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+        }
+    };
+    TriangleMesh mesh;
+    append(mesh, test::box(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1)), false);
+    append(mesh, test::box(Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(2.05, 0.05, 0.05)), false);
+    append(mesh, test::box(Eigen::Vector3d(0.4, 0.4, 0.4), Eigen::Vector3d(0.45, 0.45, 0.45)), true);
+    const DroppedDebris dropped = dropDebris(mesh, 0.01);
+    EXPECT_EQ(dropped.pieces, 2);
+    EXPECT_NEAR(dropped.volume, 2 * 1.25e-4, 1e-9);
+    EXPECT_EQ(mesh.triangles.size(), 12u);
+    EXPECT_EQ(mesh.vertices.size(), 8u);
+    EXPECT_EQ(inspectMesh(mesh).components, 1);
+    EXPECT_NEAR(enclosedVolume(mesh), 1.0, 1e-12);
+
+    TriangleMesh twins;
+    append(twins, test::box(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1)), false);
+    append(twins, test::box(Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(3, 1, 1)), false);
+    EXPECT_EQ(dropDebris(twins, 0.01).pieces, 0);
+    EXPECT_EQ(twins.triangles.size(), 24u);
 }
 
 TEST(BemSource, BadArgumentsNameTheBody) {
