@@ -65,8 +65,7 @@ FrontSifs estimateSifs(const FrontFrame& frame, const Eigen::Matrix3d& stress, d
     const EstimatorChoice choice = chooseEigenvector(frame, stress, compressiveFactor);
     const double scale = k * pmath::pow(M_PI * crackArea, 0.25);
     const double r = modeRatioForKink(choice.kink);
-    const double magnitude =
-        std::abs(choice.eigenvalue) * scale / (choice.compressive ? compressiveFactor : 1.0);
+    const double magnitude = std::abs(choice.eigenvalue) * scale;
     f.KI = magnitude / std::sqrt(1.0 + r * r);
     f.KII = r * f.KI;
     f.KIII = scale * frame.tangent.dot(stress * frame.normal);

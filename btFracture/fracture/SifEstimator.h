@@ -28,7 +28,9 @@ EstimatorChoice chooseEigenvector(const FrontFrame& frame, const Eigen::Matrix3d
                                   double compressiveFactor);
 
 // Estimated SIFs at a front point with frame `frame`, local stress `stress` [Pa] and crack area
-// `crackArea` [m^2]. K_I is positive; a compressive choice is flagged in `compressive`.
+// `crackArea` [m^2]: K_I^2 + K_II^2 = (lambda k (pi A)^(1/4))^2 with the chosen eigenvalue lambda
+// (§4.2). K_I is positive; a compressive choice is flagged in `compressive` (its threshold is
+// then the compressive toughness, PropagationLaw.h; the factor enters here only through the choice).
 FrontSifs estimateSifs(const FrontFrame& frame, const Eigen::Matrix3d& stress, double crackArea,
                        double compressiveFactor, double geometryFactor);
 

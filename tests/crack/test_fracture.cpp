@@ -127,6 +127,11 @@ TEST(SifEstimator, AlignsTheCrackNormalWithThePrincipalDirection) {
     sigma(2, 2) = -3 * s;
     f = estimateSifs(frame, sigma, A, 2.0, k);
     EXPECT_TRUE(f.compressive);
+    // Its magnitude is the chosen eigenvalue's, as for tension (§4.2): the compressive factor
+    // raises the threshold (PropagationLaw.h), it does not also scale K.
+    const EstimatorChoice choice = chooseEigenvector(frame, sigma, 2.0);
+    EXPECT_NEAR(std::hypot(f.KI, f.KII), k * std::abs(choice.eigenvalue) * std::pow(M_PI * A, 0.25),
+                1e-6 * s);
     // Out-of-plane shear on the crack plane drives mode III.
     sigma.setZero();
     sigma(1, 2) = sigma(2, 1) = s;
