@@ -44,23 +44,31 @@ DroppedDebris dropDebris(TriangleMesh& mesh, double fraction) {
             }
         }
     if (dropped.pieces == 0) return dropped;
-    std::vector<int> newIndex(nv, -1);
-    TriangleMesh kept;
-    kept.name = mesh.name;
-    for (const auto& t : mesh.triangles) {
-        if (!keep[sets.find(t[0])]) continue;
-        std::array<int, 3> out{};
-        for (int k = 0; k < 3; ++k) {
-            if (newIndex[t[k]] < 0) {
-                newIndex[t[k]] = static_cast<int>(kept.vertices.size());
-                kept.vertices.push_back(mesh.vertices[t[k]]);
-            }
-            out[k] = newIndex[t[k]];
-        }
-        kept.triangles.push_back(out);
-    }
-    mesh = std::move(kept);
+    std::vector<char> keptTriangles(mesh.triangles.size(), 0);
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        keptTriangles[t] = keep[sets.find(mesh.triangles[t][0])];
+    keepTriangles(mesh, keptTriangles);
     return dropped;
+}
+
+void keepTriangles(TriangleMesh& mesh, const std::vector<char>& keep) {
+    std::vector<int> newIndex(mesh.vertices.size(), -1);
+    std::vector<Eigen::Vector3d> vertices;
+    std::vector<std::array<int, 3>> triangles;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (!keep[t]) continue;
+        std::array<int, 3> tri = mesh.triangles[t];
+        for (int& v : tri) {
+            if (newIndex[v] < 0) {
+                newIndex[v] = static_cast<int>(vertices.size());
+                vertices.push_back(mesh.vertices[v]);
+            }
+            v = newIndex[v];
+        }
+        triangles.push_back(tri);
+    }
+    mesh.vertices = std::move(vertices);
+    mesh.triangles = std::move(triangles);
 }
 
 }  // namespace btfracture

@@ -5,6 +5,8 @@
 // needs one closed surface (bem/SurfaceMesh), so a level-set BEM source drops them.
 #include <btFracture/core/TriangleMesh.h>
 
+#include <vector>
+
 namespace btfracture {
 
 struct DroppedDebris {
@@ -15,5 +17,8 @@ struct DroppedDebris {
 // Removes every vertex-connected component whose |enclosed volume| is below `fraction` of the
 // largest one's (unreferenced vertices go too). A mesh of one component is left as it is.
 DroppedDebris dropDebris(TriangleMesh& mesh, double fraction);
+
+// Keeps the triangles t with keep[t] (in order) and the vertices they use (in first-use order).
+void keepTriangles(TriangleMesh& mesh, const std::vector<char>& keep);
 
 }  // namespace btfracture

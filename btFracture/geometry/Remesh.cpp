@@ -11,6 +11,7 @@
 #include <btFracture/geometry/EdgeLengthField.h>
 #include <btFracture/geometry/HalfEdgeMesh.h>
 #include <btFracture/geometry/IntersectionSmoothing.h>
+#include <btFracture/geometry/MeshDebris.h>
 #include <btFracture/geometry/MeshQuality.h>
 #include <btFracture/geometry/QualityRepair.h>
 #include <btFracture/geometry/RemeshEdits.h>
@@ -264,23 +265,14 @@ int dropSpecks(TriangleMesh& mesh) {
         }
     std::vector<int> size(n, 0);
     for (int t = 0; t < n; ++t) ++size[components.find(t)];
-    std::vector<std::array<int, 3>> kept;
-    for (int t = 0; t < n; ++t)
-        if (size[components.find(t)] >= 4) kept.push_back(mesh.triangles[t]);
-    const int dropped = n - static_cast<int>(kept.size());
+    std::vector<char> keep(n, 0);
+    int dropped = 0;
+    for (int t = 0; t < n; ++t) {
+        keep[t] = size[components.find(t)] >= 4;
+        dropped += keep[t] ? 0 : 1;
+    }
     if (dropped == 0) return 0;
-    std::vector<int> newIndex(mesh.vertices.size(), -1);
-    std::vector<Eigen::Vector3d> vertices;
-    for (auto& tri : kept)
-        for (int& v : tri) {
-            if (newIndex[v] < 0) {
-                newIndex[v] = static_cast<int>(vertices.size());
-                vertices.push_back(mesh.vertices[v]);
-            }
-            v = newIndex[v];
-        }
-    mesh.vertices = std::move(vertices);
-    mesh.triangles = std::move(kept);
+    keepTriangles(mesh, keep);
     return dropped;
 }
 
