@@ -477,7 +477,16 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     if (!s.levelSet) {
         TriangleMesh source = s.bemSource;
         source.name = body.name();
-        const double voxel = b.voxelSize > 0.0 ? b.voxelSize : LevelSetBody::defaultVoxelSize(source);
+        double voxel = b.voxelSize;
+        if (!(voxel > 0.0)) {
+            const LevelSetBody::DefaultVoxel d = LevelSetBody::defaultVoxel(source);
+            voxel = d.size;
+            if (d.size < d.byLength)
+                logf(LogLevel::Info, body.name(), ": level-set voxel ", d.size, " m, ",
+                     LevelSetBody::kDefaultVoxelsThrough, " through its mean thickness 2V/A = ", d.thickness,
+                     " m (the longest side / ", LevelSetBody::kDefaultVoxelsAcross, " would give ", d.byLength,
+                     " m)");
+        }
         s.levelSet = std::make_shared<LevelSetBody>(source, voxel);
     }
     outcome.timings.geometry += timer.seconds();

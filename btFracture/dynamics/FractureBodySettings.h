@@ -17,7 +17,7 @@ struct FractureBodySettings : FractureMethodSettings {
     double impulseThreshold = 1.0;
     int bemTriangleTarget = 1000;        // BEM mesh resolution [triangles], >= 4
     int collisionTriangleTarget = 5000;  // collision mesh of its fragments [triangles], >= BEM target
-    double voxelSize = 0.0;              // level-set voxel size [m]; 0: longest side / 128
+    double voxelSize = 0.0;              // level-set voxel size [m]; 0: LevelSetBody::defaultVoxel
     // Generations: an original body has refractureDepth 0, a breakable fragment its parent's + 1
     // (the > 95 % fragment keeps its parent's). A body breaks only while
     // refractureDepth <= maxRefractureDepth.

@@ -467,7 +467,7 @@ void LevelSetBody::Impl::rebuildObject() {
     if (crack) carveSlab(*object, *solid, *crack);
 }
 
-double LevelSetBody::defaultVoxelSize(const TriangleMesh& mesh) {
+LevelSetBody::DefaultVoxel LevelSetBody::defaultVoxel(const TriangleMesh& mesh) {
     if (mesh.vertices.empty())
         throw Error((mesh.name.empty() ? "<unnamed mesh>" : mesh.name) + ": mesh has no vertices");
     Eigen::Vector3d lo = mesh.vertices.front(), hi = mesh.vertices.front();
@@ -475,8 +475,16 @@ double LevelSetBody::defaultVoxelSize(const TriangleMesh& mesh) {
         lo = lo.cwiseMin(v);
         hi = hi.cwiseMax(v);
     }
-    return (hi - lo).maxCoeff() / kDefaultVoxelsAcross;
+    DefaultVoxel d;
+    d.byLength = (hi - lo).maxCoeff() / kDefaultVoxelsAcross;
+    const double area = surfaceArea(mesh);
+    d.thickness = area > 0.0 ? 2.0 * std::abs(computeMassProperties(mesh).volume) / area : 0.0;
+    const double byThickness = d.thickness / kDefaultVoxelsThrough;
+    d.size = byThickness > 0.0 && byThickness < d.byLength ? byThickness : d.byLength;
+    return d;
 }
+
+double LevelSetBody::defaultVoxelSize(const TriangleMesh& mesh) { return defaultVoxel(mesh).size; }
 
 LevelSetBody::LevelSetBody(const TriangleMesh& closedMesh, double voxelSize)
     : impl_(std::make_unique<Impl>()) {

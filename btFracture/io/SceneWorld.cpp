@@ -11,6 +11,7 @@
 #include <btFracture/dynamics/SizeScaledBroadphase.h>
 #include <btFracture/dynamics/btFractureRigidBody.h>
 #include <btFracture/geometry/ClosestPointTree.h>
+#include <btFracture/geometry/LevelSetBody.h>
 #include <btFracture/io/CrackFaces.h>
 #include <btFracture/io/MeshReader.h>
 
@@ -326,11 +327,7 @@ void SceneWorld::replaceBody(const btRigidBody& parent,
         root.original = std::make_shared<const ClosestPointTree>(found->surface);
         const btFractureRigidBody* breakable = btFractureRigidBody::upcast(&parent);
         double voxel = breakable ? breakable->settings().voxelSize : 0.0;
-        if (!(voxel > 0.0)) {
-            Eigen::AlignedBox3d box;
-            for (const auto& v : found->surface.vertices) box.extend(v);
-            voxel = box.sizes().maxCoeff() / 128.0;  // FractureBodySettings::voxelSize's default
-        }
+        if (!(voxel > 0.0)) voxel = LevelSetBody::defaultVoxelSize(found->surface);
         root.tolerance = 1.5 * voxel;
         lineage = w.lineage.emplace(&parent, std::move(root)).first;
     }
