@@ -484,8 +484,8 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
             if (d.size < d.byLength)
                 logf(LogLevel::Info, body.name(), ": level-set voxel ", d.size, " m, ",
                      LevelSetBody::kDefaultVoxelsThrough, " through its mean thickness 2V/A = ", d.thickness,
-                     " m (the longest side / ", LevelSetBody::kDefaultVoxelsAcross, " would give ", d.byLength,
-                     " m)");
+                     " m (the longest side / ", LevelSetBody::kDefaultVoxelsAcross, " would give ",
+                     d.byLength, " m)");
         }
         s.levelSet = std::make_shared<LevelSetBody>(source, voxel);
     }

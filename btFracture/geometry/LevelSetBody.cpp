@@ -484,7 +484,9 @@ LevelSetBody::DefaultVoxel LevelSetBody::defaultVoxel(const TriangleMesh& mesh) 
     return d;
 }
 
-double LevelSetBody::defaultVoxelSize(const TriangleMesh& mesh) { return defaultVoxel(mesh).size; }
+double LevelSetBody::defaultVoxelSize(const TriangleMesh& mesh) {
+    return defaultVoxel(mesh).size;
+}
 
 LevelSetBody::LevelSetBody(const TriangleMesh& closedMesh, double voxelSize)
     : impl_(std::make_unique<Impl>()) {

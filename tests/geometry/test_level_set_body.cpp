@@ -70,7 +70,8 @@ TEST(LevelSetBody, ArmadilloMassPropertiesMatchMeshAtDefaultVoxelSize) {
 TEST(LevelSetBody, DefaultVoxelResolvesAThinPlate) {
     TriangleMesh pane = makeBox(Eigen::Vector3d(0.3, 0.2, 0.003));
     pane.name = "pane";
-    const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.5, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix();
+    const Eigen::Matrix3d turn =
+        Eigen::AngleAxisd(0.5, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix();
     for (auto& v : pane.vertices) v = turn * v;  // off the grid's axes
     const double exact = computeMassProperties(pane).volume;
     const double voxel = LevelSetBody::defaultVoxelSize(pane);
@@ -78,7 +79,8 @@ TEST(LevelSetBody, DefaultVoxelResolvesAThinPlate) {
     EXPECT_NEAR(voxel, thickness / LevelSetBody::kDefaultVoxelsThrough, 1e-12);
     EXPECT_LT(voxel, 0.6 / LevelSetBody::kDefaultVoxelsAcross);
     const double volume = LevelSetBody(pane, voxel).massProperties().volume;
-    const double coarse = LevelSetBody(pane, 0.6 / LevelSetBody::kDefaultVoxelsAcross).massProperties().volume;
+    const double coarse =
+        LevelSetBody(pane, 0.6 / LevelSetBody::kDefaultVoxelsAcross).massProperties().volume;
     std::printf("pane: voxel %g m, volume %+.3f %% (at the longest side / 128: %+.3f %%)\n", voxel,
                 100 * (volume / exact - 1), 100 * (coarse / exact - 1));
     EXPECT_LT(std::abs(volume / exact - 1), 0.005);
