@@ -481,7 +481,12 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
         if (!(voxel > 0.0)) {
             const LevelSetBody::DefaultVoxel d = LevelSetBody::defaultVoxel(source);
             voxel = d.size;
-            if (d.size < d.byLength)
+            if (d.size > d.byThickness && d.size < d.byLength)
+                logf(LogLevel::Warning, body.name(), ": level-set voxel ", d.size, " m, ",
+                     LevelSetBody::kDefaultMaxVoxelsAcross, " across its longest side, puts only ",
+                     d.thickness / d.size, " through its mean thickness 2V/A = ", d.thickness,
+                     " m; set resolution.voxel_size to resolve it");
+            else if (d.size < d.byLength)
                 logf(LogLevel::Info, body.name(), ": level-set voxel ", d.size, " m, ",
                      LevelSetBody::kDefaultVoxelsThrough, " through its mean thickness 2V/A = ", d.thickness,
                      " m (the longest side / ", LevelSetBody::kDefaultVoxelsAcross, " would give ",

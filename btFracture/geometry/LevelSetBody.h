@@ -39,15 +39,18 @@ public:
     // ... but at least this many through a thin body's mean thickness 2V/A (a 6 mm pane 60 cm
     // wide: 1.3 voxels at 128 across, its level-set volume 6 % low).
     static constexpr int kDefaultVoxelsThrough = 4;
+    // ... and at most this many across the longest side (a thinner body is under-resolved, logged).
+    static constexpr int kDefaultMaxVoxelsAcross = 1024;
     // Resolution limit that guards memory: at most this many voxels across the longest side.
     static constexpr int kMaxVoxelsAcross = 4096;
 
     // Longest bounding-box side of `mesh` / kDefaultVoxelsAcross, or its mean thickness 2V/A /
-    // kDefaultVoxelsThrough where that is smaller [m].
+    // kDefaultVoxelsThrough where that is smaller, but no finer than kDefaultMaxVoxelsAcross [m].
     struct DefaultVoxel {
-        double size;       // the default [m]
-        double byLength;   // longest side / kDefaultVoxelsAcross [m]
-        double thickness;  // 2V/A [m]
+        double size;         // the default [m]
+        double byLength;     // longest side / kDefaultVoxelsAcross [m]
+        double byThickness;  // 2V/A / kDefaultVoxelsThrough [m]
+        double thickness;    // 2V/A [m]
     };
     static DefaultVoxel defaultVoxel(const TriangleMesh& mesh);
     static double defaultVoxelSize(const TriangleMesh& mesh);

@@ -65,8 +65,8 @@ TEST(LevelSetBody, ArmadilloMassPropertiesMatchMeshAtDefaultVoxelSize) {
 }
 
 // A 6 mm pane 60 cm wide, turned off the grid's axes: 128 voxels across its longest side put 1.3
-// through it (volume +1.4 %); the default puts 4 through its mean thickness 2V/A (+0.05 %). A
-// chunky body keeps 128 across.
+// through it (volume +1.4 %); the default puts 4 through its mean thickness 2V/A (+0.05 %), up
+// to 1,024 across. A chunky body keeps 128 across.
 TEST(LevelSetBody, DefaultVoxelResolvesAThinPlate) {
     TriangleMesh pane = makeBox(Eigen::Vector3d(0.3, 0.2, 0.003));
     pane.name = "pane";
@@ -84,6 +84,10 @@ TEST(LevelSetBody, DefaultVoxelResolvesAThinPlate) {
     std::printf("pane: voxel %g m, volume %+.3f %% (at the longest side / 128: %+.3f %%)\n", voxel,
                 100 * (volume / exact - 1), 100 * (coarse / exact - 1));
     EXPECT_LT(std::abs(volume / exact - 1), 0.005);
+
+    // A 1 mm sheet 2 m long would need 8,000 voxels across: the default stops at 1,024.
+    const TriangleMesh sheet = makeBox(Eigen::Vector3d(1.0, 0.5, 0.0005));
+    EXPECT_DOUBLE_EQ(LevelSetBody::defaultVoxelSize(sheet), 2.0 / LevelSetBody::kDefaultMaxVoxelsAcross);
 
     const TriangleMesh cube = makeBox(Eigen::Vector3d(0.1, 0.1, 0.1));
     EXPECT_DOUBLE_EQ(LevelSetBody::defaultVoxelSize(cube), 0.2 / LevelSetBody::kDefaultVoxelsAcross);
