@@ -478,7 +478,7 @@ LevelSetBody::DefaultVoxel LevelSetBody::defaultVoxel(const TriangleMesh& mesh) 
     DefaultVoxel d;
     d.byLength = (hi - lo).maxCoeff() / kDefaultVoxelsAcross;
     const double area = surfaceArea(mesh);
-    d.thickness = area > 0.0 ? 2.0 * std::abs(computeMassProperties(mesh).volume) / area : 0.0;
+    d.thickness = area > 0.0 ? 2.0 * std::abs(enclosedVolume(mesh)) / area : 0.0;
     d.byThickness = d.thickness / kDefaultVoxelsThrough;
     const double finest = d.byLength * kDefaultVoxelsAcross / kDefaultMaxVoxelsAcross;
     d.size = d.byThickness > 0.0 && d.byThickness < d.byLength ? std::max(d.byThickness, finest) : d.byLength;

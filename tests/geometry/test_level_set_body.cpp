@@ -84,6 +84,10 @@ TEST(LevelSetBody, DefaultVoxelResolvesAThinPlate) {
     std::printf("pane: voxel %g m, volume %+.3f %% (at the longest side / 128: %+.3f %%)\n", voxel,
                 100 * (volume / exact - 1), 100 * (coarse / exact - 1));
     EXPECT_LT(std::abs(volume / exact - 1), 0.005);
+    // An inside-out mesh (LevelSetBody flips it with a warning) gets the same default.
+    TriangleMesh flipped = pane;
+    for (auto& t : flipped.triangles) std::swap(t[1], t[2]);
+    EXPECT_DOUBLE_EQ(LevelSetBody::defaultVoxelSize(flipped), voxel);
 
     // A 1 mm sheet 2 m long would need 8,000 voxels across: the default stops at 1,024.
     const TriangleMesh sheet = makeBox(Eigen::Vector3d(1.0, 0.5, 0.0005));
