@@ -38,7 +38,6 @@ std::size_t FractureSolver::crackSystemBytes() const {
 void FractureSolver::beginEvent(const Eigen::VectorXd& q, const ContactEnergy& energy) {
     cracks_.refreshUnknowns(
         solver_.mesh());  // cracks may have been added from outside (pre-cracks, carried cracks)
-    triangleInBody_.clear();
     arrested_.resize(cracks_.nodeCount(), 0);
     tractions_ = q;
     peakStress_ = -1.0;
@@ -192,14 +191,18 @@ void FractureSolver::boundByEnergy(std::vector<FrontSifs>& out) {
 
 // §4.2's crack area A per sheet, counting only the triangles inside the body: a sheet a fragment
 // carries (§5.3) is its parent's whole sheet, and the part past the fragment's surface is no
-// crack of this body. Triangles never move within an event, so each is tested once.
+// crack of this body. Each triangle is tested once (an O(surface triangles) winding number).
 std::vector<double> FractureSolver::sheetAreasInBody() {
     const SurfaceMesh& body = solver_.mesh();
-    for (int t = static_cast<int>(triangleInBody_.size()); t < cracks_.triangleCount(); ++t) {
+    testedCentroids_.resize(cracks_.triangleCount(), Eigen::Vector3d::Constant(std::nan("")));
+    triangleInBody_.resize(cracks_.triangleCount(), 0);
+    for (int t = 0; t < cracks_.triangleCount(); ++t) {
         const auto& tri = cracks_.triangle(t);
         const Eigen::Vector3d centroid =
             (cracks_.node(tri[0]) + cracks_.node(tri[1]) + cracks_.node(tri[2])) / 3.0;
-        triangleInBody_.push_back(body.encloses(centroid));
+        if (centroid == testedCentroids_[t]) continue;
+        testedCentroids_[t] = centroid;
+        triangleInBody_[t] = body.encloses(centroid);
     }
     std::vector<double> areas(cracks_.sheetCount(), 0.0);
     for (int t = 0; t < cracks_.triangleCount(); ++t)

@@ -147,8 +147,12 @@ private:
     Eigen::VectorXd estimatedOpenings_;  // EST: per crack node, 3 each
     Eigen::VectorXd solvedOpenings_;     // FULL: per crack node, 3 each
     std::vector<char> arrested_;         // per crack node
-    std::vector<char> triangleInBody_;   // per crack triangle, this event: its centroid is inside
-    std::vector<char> seeded_;           // per surface triangle
+    // Per crack triangle: its centroid and whether the body's surface encloses it. Kept across
+    // events (crack triangles never move); a crack mesh replaced through cracks() shows up as
+    // centroids that differ, and those triangles are tested again.
+    std::vector<Eigen::Vector3d> testedCentroids_;
+    std::vector<char> triangleInBody_;
+    std::vector<char> seeded_;  // per surface triangle
     GrowthObserver observer_;
 };
 
