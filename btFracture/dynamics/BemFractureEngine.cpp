@@ -564,7 +564,10 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     }
     outcome.crackTriangles = s.fracture->cracks().triangleCount();
     if (cutObserver_) cutObserver_(body, *s.levelSet);
-    std::vector<Fragment> fragments = s.levelSet->fragments(settings_.fragments, b.collisionTriangleTarget);
+    // Two pieces at least, else none is built: a body pressed again and again would mesh its one
+    // piece at every call only to drop it.
+    std::vector<Fragment> fragments =
+        s.levelSet->fragments(settings_.fragments, b.collisionTriangleTarget, 2);
     outcome.timings.geometry += timer.seconds();
     if (fragments.size() < 2) return outcome;  // cracked, not yet apart: the cracks stay for later events
 

@@ -147,8 +147,11 @@ public:
     // (both sides in the same fragment) are filled for mass, collision and BEM surface and
     // carried over into Fragment::levelSet (§5.3). Sorted by decreasing volume (ties: lowest
     // voxel first). Each collision mesh has about `collisionTriangles` triangles (>= 4). Throws
-    // btfracture::Error for invalid settings.
-    std::vector<Fragment> fragments(const FragmentSettings& settings, int collisionTriangles) const;
+    // btfracture::Error for invalid settings. With fewer than `minimumPieces` components above
+    // the dust size it returns none and builds nothing (2: a caller that only wants pieces that
+    // came apart skips meshing a body whose cuts separate nothing yet).
+    std::vector<Fragment> fragments(const FragmentSettings& settings, int collisionTriangles,
+                                    int minimumPieces = 1) const;
 
     struct Impl;  // OpenVDB grids (internal/LevelSetGrids.h)
 

@@ -140,20 +140,11 @@ void dropIslands(FloatGrid& phi, const BoolGrid& component, float background) {
     }
 }
 
-}  // namespace
-
-std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings,
-                                              int collisionTriangles) const {
-    settings.validate();
-    if (collisionTriangles < 4)
-        throw Error(impl_->name + ": fragments: collisionTriangles " + std::to_string(collisionTriangles) +
-                    " (need >= 4)");
-    const Impl& body = *impl_;
-    const double dx = body.voxelSize;
-    const float background = kHalfWidthVoxels * static_cast<float>(dx);
-
-    // 1. Connected components of the object's interior (6-connected voxels), in a
-    //    deterministic order: most voxels first, then lowest first voxel.
+// Connected components of the object's interior (6-connected voxels), in a deterministic order
+// (most voxels first, then lowest first voxel), without dust: components of too few voxels to
+// matter (their volume and count are added to dustVolume and dustCount).
+std::vector<Component> componentsAboveDust(const LevelSetBody::Impl& body, const FragmentSettings& settings,
+                                           double& dustVolume, int& dustCount) {
     std::vector<BoolGrid::Ptr> masks = interiorPieces(*body.object);
     std::vector<Component> components;
     for (auto& mask : masks) {
@@ -164,21 +155,36 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings,
         c.mask = mask;
         components.push_back(std::move(c));
     }
-    masks.clear();
     std::sort(components.begin(), components.end(), [](const Component& x, const Component& y) {
         return std::tie(y.voxels, x.firstVoxel) < std::tie(x.voxels, y.firstVoxel);
     });
-
-    // Dust: too few voxels to matter (dropped before any work is spent on them).
-    const double voxelVolume = dx * dx * dx;
-    double dustVolume = 0.0;
-    int dustCount = 0;
+    const double voxelVolume = body.voxelSize * body.voxelSize * body.voxelSize;
     while (!components.empty() && static_cast<double>(components.back().voxels) * voxelVolume <=
                                       settings.dustMaxFraction * body.originalVolume) {
         dustVolume += static_cast<double>(components.back().voxels) * voxelVolume;
         ++dustCount;
         components.pop_back();
     }
+    return components;
+}
+
+}  // namespace
+
+std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings, int collisionTriangles,
+                                              int minimumPieces) const {
+    settings.validate();
+    if (collisionTriangles < 4)
+        throw Error(impl_->name + ": fragments: collisionTriangles " + std::to_string(collisionTriangles) +
+                    " (need >= 4)");
+    const Impl& body = *impl_;
+    const double dx = body.voxelSize;
+    const float background = kHalfWidthVoxels * static_cast<float>(dx);
+
+    // 1. Connected components of the object's interior, dust dropped.
+    double dustVolume = 0.0;
+    int dustCount = 0;
+    std::vector<Component> components = componentsAboveDust(body, settings, dustVolume, dustCount);
+    if (static_cast<int>(components.size()) < minimumPieces) return {};
 
     Int32Grid::Ptr labels = Int32Grid::create(-1);
     {

@@ -53,6 +53,7 @@ void expectClosedManifold(const TriangleMesh& mesh) {
 
 TEST(Fragments, UncutBodyIsOneFragmentKeepingItsSolver) {
     const LevelSetBody box = makeBox();
+    EXPECT_TRUE(box.fragments(FragmentSettings(), test::kCollisionTriangles, 2).empty());
     const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(pieces.size(), 1u);
     EXPECT_NEAR(pieces[0].mass.volume / box.massProperties().volume, 1.0, 1e-6);
@@ -185,6 +186,7 @@ TEST(Fragments, CrossingCracksGiveFourAnalyticPieces) {
     const double x = 0.0437, y = 0.0252;
     box.cutAlongSurface(test::sheet({x, 0.03, 0.025}, {0, 0.05, 0}, {0, 0, 0.05}, "x crack"), 1);
     box.cutAlongSurface(test::sheet({0.05, y, 0.025}, {0.07, 0, 0}, {0, 0, 0.05}, "y crack"), 2);
+    EXPECT_EQ(box.fragments(FragmentSettings(), test::kCollisionTriangles, 5).size(), 0u);
     const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(pieces.size(), 4u);
     const double z = kBoxSize.z();
@@ -209,6 +211,8 @@ TEST(Fragments, CutStoppedHalfwayLeavesOneFragmentWithAnIncompleteCrack) {
     const double x = 0.05;
     // Sheet covers y in [-0.01, 0.03]: half of the 6 cm section.
     box.cutAlongSurface(test::sheet({x, 0.01, 0.025}, {0, 0.02, 0}, {0, 0, 0.04}, "half crack"), 3);
+    // Nothing came apart: with two pieces asked for, none is built (the engine's call).
+    EXPECT_TRUE(box.fragments(FragmentSettings(), test::kCollisionTriangles, 2).empty());
     const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
     ASSERT_EQ(pieces.size(), 1u);
     const Fragment& f = pieces[0];
