@@ -15,4 +15,7 @@ struct TriangleMesh {
     std::string name;  // where it came from (file name or generator), used in messages
 };
 
+// Drops the vertices no triangle uses and numbers the rest in order of first use.
+void removeUnusedVertices(TriangleMesh& mesh);
+
 }  // namespace btfracture

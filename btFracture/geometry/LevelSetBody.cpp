@@ -407,16 +407,9 @@ TriangleMesh meshFromGrid(const FloatGrid& phi, const std::string& name, double 
             addTriangle(q[1], q[2], q[3]);
         }
     }
-    // Keep only referenced points, in first-use order.
-    std::vector<int> remap(points.size(), -1);
-    for (auto& tri : mesh.triangles)
-        for (int& v : tri) {
-            if (remap[v] < 0) {
-                remap[v] = static_cast<int>(mesh.vertices.size());
-                mesh.vertices.push_back(point(static_cast<unsigned>(v)));
-            }
-            v = remap[v];
-        }
+    mesh.vertices.reserve(points.size());
+    for (unsigned i = 0; i < points.size(); ++i) mesh.vertices.push_back(point(i));
+    removeUnusedVertices(mesh);
     // OpenVDB's winding is inward for level sets; make the normals point outward.
     double signedVolume = 0.0;
     for (const auto& t : mesh.triangles)

@@ -92,19 +92,10 @@ public:
     TriangleMesh result(const std::string& name) const {
         TriangleMesh out;
         out.name = name;
-        std::vector<int> remap(position_.size(), -1);
-        for (int t = 0; t < static_cast<int>(triangles_.size()); ++t) {
-            if (!triangleAlive_[t]) continue;
-            std::array<int, 3> tri = triangles_[t];
-            for (int& v : tri) {
-                if (remap[v] < 0) {
-                    remap[v] = static_cast<int>(out.vertices.size());
-                    out.vertices.push_back(position_[v]);
-                }
-                v = remap[v];
-            }
-            out.triangles.push_back(tri);
-        }
+        out.vertices = position_;
+        for (int t = 0; t < static_cast<int>(triangles_.size()); ++t)
+            if (triangleAlive_[t]) out.triangles.push_back(triangles_[t]);
+        removeUnusedVertices(out);
         return out;
     }
 
