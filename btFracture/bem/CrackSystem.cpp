@@ -557,8 +557,14 @@ int CrackSystem::update() {
 }
 
 CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {
+    return solve(q, solver_.displacements(q));
+}
+
+CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q, const Eigen::VectorXd& b) const {
     Solution s;
-    const Eigen::VectorXd b = solver_.displacements(q);  // K_R^-1 K^T F q, checked
+    if (b.size() != solver_.stiffness().rows())
+        throw Error("CrackSystem::solve: expected " + std::to_string(solver_.stiffness().rows()) +
+                    " crack-free displacement values, got " + std::to_string(b.size()));
     if (assembledUnknowns_ == 0) {
         s.displacements = b;
         s.openings.resize(0);

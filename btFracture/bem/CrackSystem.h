@@ -53,6 +53,9 @@ public:
     };
     // Schur complement solve (P0 tractions q, 3m [Pa], balanced).
     Solution solve(const Eigen::VectorXd& tractions) const;
+    // The same, given the crack-free displacements of q (ElasticSolver::displacements): a caller
+    // that solves one load as the cracks grow forms F q and its surface solve once.
+    Solution solve(const Eigen::VectorXd& tractions, const Eigen::VectorXd& crackFree) const;
     // The same system factored as a whole (Blocks::Keep only; O((3n + 3k)^3)).
     Solution solveMonolithic(const Eigen::VectorXd& tractions) const;
 

@@ -109,6 +109,20 @@ const Eigen::MatrixXd& ElasticSolver::stiffness() const {
 }
 
 Eigen::VectorXd ElasticSolver::load(const Eigen::VectorXd& q) const {
+    if (q.size() != 3 * mesh_.triangleCount()) {
+        std::ostringstream msg;
+        msg << "ElasticSolver: expected " << 3 * mesh_.triangleCount() << " traction values, got " << q.size();
+        throw Error(msg.str());
+    }
+    if (!q.allFinite()) throw Error("ElasticSolver: tractions contain NaN or Inf");
+    const TractionResultant net = netLoad(q);
+    if (net.relative > settings_.balanceTolerance) {
+        std::ostringstream msg;
+        msg << "tractions are not free of net force and torque (|F| = " << net.force.norm()
+            << " N, |M| = " << net.torque.norm() << " N m, relative " << net.relative
+            << "); remove them first (paper Eq. 6, balanceTractions)";
+        throw Error(msg.str());
+    }
     requireResident("load");
     return productInDouble(tractionToLoad_, q);
 }
@@ -146,21 +160,6 @@ Eigen::MatrixXd ElasticSolver::solveRegularised(const Eigen::MatrixXd& rhs) cons
 }
 
 Eigen::VectorXd ElasticSolver::displacements(const Eigen::VectorXd& q) const {
-    if (q.size() != 3 * mesh_.triangleCount()) {
-        std::ostringstream msg;
-        msg << "ElasticSolver::displacements: expected " << 3 * mesh_.triangleCount()
-            << " traction values, got " << q.size();
-        throw Error(msg.str());
-    }
-    if (!q.allFinite()) throw Error("ElasticSolver::displacements: tractions contain NaN or Inf");
-    const TractionResultant net = netLoad(q);
-    if (net.relative > settings_.balanceTolerance) {
-        std::ostringstream msg;
-        msg << "tractions are not free of net force and torque (|F| = " << net.force.norm()
-            << " N, |M| = " << net.torque.norm() << " N m, relative " << net.relative
-            << "); remove them first (paper Eq. 6, balanceTractions)";
-        throw Error(msg.str());
-    }
     return displacementsFromLoad(load(q));
 }
 

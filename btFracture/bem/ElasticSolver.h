@@ -62,7 +62,8 @@ public:
     const Eigen::MatrixXd& stiffness() const;
     // The load f = F q (3n) of P0 tractions q (3m [Pa]), in double from F's single-precision
     // entries: F only forms this product, so the rounding stays near 1e-7 of f (and F takes half
-    // the bytes; at 1,500 triangles 41 of the BEM's 124 MB).
+    // the bytes; at 1,500 triangles 41 of the BEM's 124 MB). Throws if q carries net force or
+    // torque, as displacements() does.
     Eigen::VectorXd load(const Eigen::VectorXd& tractions) const;
     const Eigen::MatrixXd& regulariser() const { return rigidModes_; }  // T (6 x 3n), Eq. 1-2, unit rows
     double regularisationWeight() const { return gamma_; }

@@ -44,24 +44,24 @@ void FractureSolver::beginEvent(const Eigen::VectorXd& q, const ContactEnergy& e
     strainEnergy_ = -1.0;
     releasable_ = -1.0;
     contactEnergy_ = energy;
+    // One crack-free solve per event: EST's stress before its §4.3 update, FULL's right-hand side.
     load_ = solver_.load(q);
-    solver_.netLoad(q);  // validates size
+    crackFree_ = solver_.displacementsFromLoad(load_);
     if (settings_.method == FractureMethod::Hybrid && active_ == FractureMethod::Full &&
         meshElements() >= settings_.hybridElementThreshold)
         switchToEstimator();
     if (active_ == FractureMethod::Full) {
         if (!full_) full_ = std::make_unique<CrackSystem>(solver_, cracks_);
         full_->update();
-        const CrackSystem::Solution s = full_->solve(q);
+        const CrackSystem::Solution s = full_->solve(q, crackFree_);
         displacements_ = s.displacements;
         solvedOpenings_ = full_->nodalOpenings(s);
         leavingOpenings_ = Eigen::VectorXd::Zero(solvedOpenings_.size());  // as EST starts an event
     } else {
-        // EST: one crack-free solve per event; existing cracks are re-estimated as fronts move.
+        // EST: existing cracks are re-estimated as fronts move.
         crackLoad_.setZero();
         estimatedOpenings_ = Eigen::VectorXd::Zero(3 * cracks_.nodeCount());
-        displacements_ = solver_.displacements(q);
-        crackFree_ = displacements_;
+        displacements_ = crackFree_;
     }
 }
 
@@ -81,7 +81,7 @@ int FractureSolver::seed() {
         const std::vector<int> fresh = cracks_.refreshUnknowns(solver_.mesh());
         if (active_ == FractureMethod::Full) {
             full_->update();
-            const CrackSystem::Solution s = full_->solve(tractions_);
+            const CrackSystem::Solution s = full_->solve(tractions_, crackFree_);
             displacements_ = s.displacements;
             solvedOpenings_ = full_->nodalOpenings(s);
             recordLeavingOpenings(fresh, Eigen::VectorXd::Zero(3 * fresh.size()));  // no front left them
@@ -160,7 +160,6 @@ void FractureSolver::boundByEnergy(std::vector<FrontSifs>& out) {
     const Material& m = field_.material();
     if (strainEnergy_ < 0.0) {
         const bool full = active_ == FractureMethod::Full;
-        if (full) crackFree_ = solver_.displacements(tractions_);
         strainEnergy_ = solver_.strainEnergy(tractions_, crackFree_);
         const double cap = full ? std::numeric_limits<double>::infinity() : strainEnergy_;
         const Eigen::VectorXd& resting = contactEnergy_.restingTractions;
@@ -321,7 +320,7 @@ void FractureSolver::updateFrontState(const std::vector<FrontSifs>& sifs,
             recordLeavingOpenings(fresh, cod);
             return;
         }
-        const CrackSystem::Solution s = full_->solve(tractions_);
+        const CrackSystem::Solution s = full_->solve(tractions_, crackFree_);
         displacements_ = s.displacements;
         solvedOpenings_ = full_->nodalOpenings(s);
         recordLeavingOpenings(fresh, cod);
@@ -365,7 +364,6 @@ void FractureSolver::switchToEstimator() {
         displacements_ = solver_.displacementsFromLoad(load_ - crackLoad_);
         estimatedOpenings_ = solvedOpenings_;
     }
-    crackFree_ = solver_.displacements(tractions_);
     full_.reset();
     active_ = FractureMethod::Estimated;
     logf(LogLevel::Info, "fracture: HYBRID switched to the estimator at ", meshElements(), " BEM elements");

@@ -134,9 +134,9 @@ private:
     // diameter where that is 0.
     double elementSize_ = 0.0;
     Eigen::VectorXd tractions_, load_, crackLoad_, displacements_;
-    // EST: the event's crack-free displacements (no §4.3), their peak surface stress and the
-    // tractions' strain energy (both negative until computed), read by the gain limit, the
-    // stress bound and the energy bound.
+    // The event's crack-free displacements (EST: before §4.3; FULL: every solve's right-hand
+    // side), their peak surface stress and the tractions' strain energy (both negative until
+    // computed), read by the gain limit, the stress bound and the energy bound.
     Eigen::VectorXd crackFree_;
     double peakStress_ = -1.0, strainEnergy_ = -1.0, releasable_ = -1.0;
     ContactEnergy contactEnergy_;
