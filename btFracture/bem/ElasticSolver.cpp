@@ -111,7 +111,8 @@ const Eigen::MatrixXd& ElasticSolver::stiffness() const {
 Eigen::VectorXd ElasticSolver::load(const Eigen::VectorXd& q) const {
     if (q.size() != 3 * mesh_.triangleCount()) {
         std::ostringstream msg;
-        msg << "ElasticSolver: expected " << 3 * mesh_.triangleCount() << " traction values, got " << q.size();
+        msg << "ElasticSolver: expected " << 3 * mesh_.triangleCount() << " traction values, got "
+            << q.size();
         throw Error(msg.str());
     }
     if (!q.allFinite()) throw Error("ElasticSolver: tractions contain NaN or Inf");
