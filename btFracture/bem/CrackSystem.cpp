@@ -570,7 +570,7 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q, const Eigen::
         s.openings.resize(0);
         return s;
     }
-    const Eigen::VectorXd rhs = loadOnCracks(q) - C_.transpose() * b;
+    const Eigen::VectorXd rhs = loadOnCracks(q) - transposedTimes(C_, b);
     Eigen::VectorXd x(rhs.size());  // in the factor's order
     for (int k = 0; k < assembledUnknowns_; ++k) x.segment<3>(3 * k) = rhs.segment<3>(3 * slots_[k]);
     if (denseSchur_.size() > 0) {

@@ -166,10 +166,10 @@ Eigen::VectorXd ElasticSolver::displacements(const Eigen::VectorXd& q) const {
 
 Eigen::VectorXd ElasticSolver::displacementsFromLoad(const Eigen::VectorXd& f) const {
     requireResident("displacementsFromLoad");
-    const Eigen::VectorXd rhs = stiffness_.transpose() * f;
+    const Eigen::VectorXd rhs = transposedTimes(stiffness_, f);
     Eigen::VectorXd u = solveRegularised(rhs);
     // Residual of K_R u = K^T f, formed without K_R.
-    const Eigen::VectorXd residual = stiffness_.transpose() * (stiffness_ * u) +
+    const Eigen::VectorXd residual = transposedTimes(stiffness_, stiffness_ * u) +
                                      gamma_ * rigidModes_.transpose() * (rigidModes_ * u) - rhs;
     const double relative = residual.norm() / std::max(rhs.norm(), std::numeric_limits<double>::min());
     if (!u.allFinite() || relative > 1e-6) {

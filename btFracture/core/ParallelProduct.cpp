@@ -32,4 +32,19 @@ Eigen::MatrixXd transposedProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
     return out;
 }
 
+Eigen::VectorXd transposedTimes(const Eigen::MatrixXd& a, const Eigen::VectorXd& x) {
+    if (a.rows() != x.size())
+        throw Error("transposedTimes: " + std::to_string(a.rows()) + " rows against " +
+                    std::to_string(x.size()));
+    constexpr int kColumns = 64;  // a multiple of 8 (the kernel's row block)
+    const int m = static_cast<int>(a.cols());
+    Eigen::VectorXd out(m);
+#pragma omp parallel for schedule(static) if (m > 4 * kColumns)
+    for (int j = 0; j < m; j += kColumns) {
+        const int w = std::min(kColumns, m - j);
+        out.segment(j, w).noalias() = a.middleCols(j, w).transpose() * x;
+    }
+    return out;
+}
+
 }  // namespace btfracture

@@ -21,17 +21,25 @@ void forEachColumnBlock(Eigen::Index columns, int width, Work&& work) {
 }
 
 // a q for a matrix a kept in single precision because it only ever forms this product, summed in
-// double a few rows at a time (the whole of a in double would be a temporary twice its size).
+// double a few rows at a time (the whole of a in double would be a temporary twice its size), the
+// blocks of rows on all cores. Each entry is a dot product of its own row: the same bits for any
+// block size and thread count.
 template <class Float>
 Eigen::VectorXd productInDouble(const Eigen::MatrixBase<Float>& a, const Eigen::VectorXd& q) {
-    constexpr Eigen::Index kRows = 64;
-    Eigen::VectorXd out(a.rows());
-    for (Eigen::Index r = 0; r < a.rows(); r += kRows) {
-        const Eigen::Index h = std::min(kRows, a.rows() - r);
+    constexpr int kRows = 64;
+    const int rows = static_cast<int>(a.rows());
+    Eigen::VectorXd out(rows);
+#pragma omp parallel for schedule(static) if (rows > 4 * kRows)
+    for (int r = 0; r < rows; r += kRows) {
+        const int h = std::min(kRows, rows - r);
         out.segment(r, h).noalias() = a.middleRows(r, h).template cast<double>() * q;
     }
     return out;
 }
+
+// a^T x on all cores, in blocks of 64 columns of a: Eigen's row-major kernel takes rows eight at a
+// time from the first, so every entry rounds as in the single product a^T x.
+Eigen::VectorXd transposedTimes(const Eigen::MatrixXd& a, const Eigen::VectorXd& x);
 
 // a^T b for a (k x m) and b (k x n): an m x n matrix, in fixed blocks of rows and columns.
 Eigen::MatrixXd transposedProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Zlib
 // transposedProduct (a^T b in fixed blocks on all cores): Eigen's product to rounding, and the
-// same bits on any thread count.
+// same bits on any thread count. transposedTimes (a^T x) and productInDouble (a q, a in single
+// precision): Eigen's single product bit for bit, on any thread count.
+#include <btFracture/core/Error.h>
 #include <btFracture/core/ParallelProduct.h>
 #include <btFracture/core/ThreadLimit.h>
 
@@ -40,4 +42,31 @@ TEST(ParallelProduct, TransposedProductIsEigensForAnyShapeAndThreadCount) {
         EXPECT_LT(difference, 1e-14);
         EXPECT_EQ((one - two).cwiseAbs().maxCoeff(), 0.0);
     }
+}
+
+TEST(ParallelProduct, MatrixVectorProductsAreEigensBitForBitOnAnyThreadCount) {
+    // The BEM's K^T f and F q (3n x 3n and 3n x 3m), CrackSystem's C^T b and G^T q, remainders of
+    // the 64-row and 8-row blocks, a single row or column and empty operands.
+    struct Shape {
+        int rows, cols;
+    };
+    for (const Shape s : {Shape{4500, 4500}, Shape{2253, 4506}, Shape{1003, 301}, Shape{300, 7},
+                          Shape{7, 300}, Shape{1, 90}, Shape{90, 1}, Shape{0, 5}, Shape{5, 0}}) {
+        const Eigen::MatrixXd a = Eigen::MatrixXd::Random(s.rows, s.cols);
+        const Eigen::VectorXd x = Eigen::VectorXd::Random(s.rows), q = Eigen::VectorXd::Random(s.cols);
+        const Eigen::Matrix<float, -1, -1, Eigen::RowMajor> f = a.cast<float>();
+        const Eigen::VectorXd plainTransposed = a.transpose() * x;
+        Eigen::VectorXd plainSingle(s.rows);
+        for (int r = 0; r < s.rows; ++r) plainSingle(r) = (f.row(r).cast<double>() * q)(0);
+        for (const int threads : {1, 2}) {
+            const ThreadLimit limit(threads);
+            const Eigen::VectorXd transposed = transposedTimes(a, x), single = productInDouble(f, q);
+            ASSERT_EQ(transposed.size(), s.cols);
+            ASSERT_EQ(single.size(), s.rows);
+            EXPECT_TRUE(transposed == plainTransposed)
+                << s.rows << " x " << s.cols << ", " << threads << " threads";
+            EXPECT_TRUE(single == plainSingle) << s.rows << " x " << s.cols << ", " << threads << " threads";
+        }
+    }
+    EXPECT_THROW(transposedTimes(Eigen::MatrixXd::Zero(3, 2), Eigen::VectorXd::Zero(2)), Error);
 }
