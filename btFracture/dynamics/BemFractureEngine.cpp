@@ -52,15 +52,16 @@ public:
     TriangleMesh bemSource;
     CrackMesh carriedCracks;                // incomplete cracks inherited from a parent (state frame, §5.3)
     std::unique_ptr<ElasticSolver> solver;  // BEM frame = state frame - solver->mesh().offset()
-    std::unique_ptr<TractionBalancer> balancer;  // on the BEM mesh, BEM frame
-    std::unique_ptr<FractureSolver> fracture;    // borrows *solver
-    std::map<int, int> cutTriangles;             // crack sheet -> triangles already cut (no markers)
-    std::unique_ptr<CrackFronts> fronts;         // voxel-resolution fronts (state frame)
-    FrontAdvanceResult frontTally;               // marker arrests since the last cut (logged there)
-    std::shared_ptr<ResidentMatrices> resident;  // set once the BEM is built
-    std::uint64_t lastCall = 0;                  // ResidentMatrices::calls at this state's last call
-    std::uint64_t lastStep = 0;                  // FractureStatistics::steps at its last call
-    std::string owner;                           // name of the body at its last call (for logs)
+    std::unique_ptr<TractionBalancer> balancer;   // on the BEM mesh, BEM frame
+    std::unique_ptr<FractureSolver> fracture;     // borrows *solver
+    std::map<int, int> cutTriangles;              // crack sheet -> triangles already cut (no markers)
+    std::unique_ptr<CrackFronts> fronts;          // voxel-resolution fronts (state frame)
+    FrontAdvanceResult frontTally;                // marker arrests since the last cut (logged there)
+    std::shared_ptr<ResidentMatrices> resident;   // set once the BEM is built
+    std::uint64_t lastCall = 0;                   // ResidentMatrices::calls at this state's last call
+    std::uint64_t lastStep = 0;                   // FractureStatistics::steps at its last call
+    std::string owner;                            // name of the body at its last call (for logs)
+    mutable bool curvatureFailureLogged = false;  // meanCurvature logs its fallback once per state
 
     ~BemFractureState() override {
         if (!resident) return;
@@ -454,8 +455,10 @@ double BemFractureEngine::meanCurvature(const btFractureRigidBody& body,
     try {
         return s->levelSet->meanCurvature(p);
     } catch (const Error& e) {  // the projection onto the surface failed (a thin or cracked region)
-        logf(LogLevel::Info, body.name(), ": level-set curvature failed (", e.what(),
-             "); curvature from the mesh");
+        if (!s->curvatureFailureLogged)
+            logf(LogLevel::Info, body.name(), ": level-set curvature failed (", e.what(),
+                 "); curvature from the mesh, here and wherever it fails again on this body (not logged)");
+        s->curvatureFailureLogged = true;
         return FractureEngine::meanCurvature(body, bodyPoint);
     }
 }
