@@ -407,9 +407,7 @@ TriangleMesh meshFromGrid(const FloatGrid& phi, const std::string& name, double 
             addTriangle(q[1], q[2], q[3]);
         }
     }
-    mesh.vertices.reserve(points.size());
-    for (unsigned i = 0; i < points.size(); ++i) mesh.vertices.push_back(point(i));
-    removeUnusedVertices(mesh);
+    takeUsedVertices(mesh, points.size(), [&](int v) { return point(static_cast<unsigned>(v)); });
     // OpenVDB's winding is inward for level sets; make the normals point outward.
     double signedVolume = 0.0;
     for (const auto& t : mesh.triangles)

@@ -92,10 +92,9 @@ public:
     TriangleMesh result(const std::string& name) const {
         TriangleMesh out;
         out.name = name;
-        out.vertices = position_;
         for (int t = 0; t < static_cast<int>(triangles_.size()); ++t)
             if (triangleAlive_[t]) out.triangles.push_back(triangles_[t]);
-        removeUnusedVertices(out);
+        takeUsedVertices(out, position_.size(), [&](int v) { return position_[v]; });
         return out;
     }
 
