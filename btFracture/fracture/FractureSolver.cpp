@@ -167,10 +167,14 @@ void FractureSolver::boundByEnergy(std::vector<FrontSifs>& out) {
                                          ? solver_.strainEnergy(resting, solver_.displacements(resting))
                                          : 0.0;
         releasable_ = deliverableEnergy(cap, contactEnergy_.kinetic, restingEnergy);
-        if (settings_.energyBound && releasable_ < strainEnergy_)
-            logf(LogLevel::Info, "fracture: the tractions store ", strainEnergy_,
-                 " J, the contacts deliver at most ", releasable_, " J (impacts ", contactEnergy_.kinetic,
-                 " J, resting load ", restingEnergy, " J); the energy bound uses the latter");
+        if (settings_.energyBound && releasable_ < strainEnergy_) {
+            logf(contactCapLogged_ ? LogLevel::Debug : LogLevel::Info, "fracture: the tractions store ",
+                 strainEnergy_, " J, the contacts deliver at most ", releasable_, " J (impacts ",
+                 contactEnergy_.kinetic, " J, resting load ", restingEnergy,
+                 " J); the energy bound uses the latter",
+                 contactCapLogged_ ? "" : " (further events of this body: debug log)");
+            contactCapLogged_ = true;
+        }
     }
     energyScale_ = 1.0;
     if (!settings_.energyBound) return;

@@ -140,6 +140,7 @@ private:
     Eigen::VectorXd crackFree_;
     double peakStress_ = -1.0, strainEnergy_ = -1.0, releasable_ = -1.0;
     ContactEnergy contactEnergy_;
+    bool contactCapLogged_ = false;  // the contacts' energy cap: logged as info once, then as debug
     int stressBounded_ = 0;
     double energyScale_ = 1.0;
     Eigen::VectorXd leavingOpenings_;  // FULL: per crack node, the §4.3 estimate of its opening
