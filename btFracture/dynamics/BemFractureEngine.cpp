@@ -362,8 +362,8 @@ CarriedIds carriedIds(const CrackMesh& cracks, const std::vector<int>& sheets, C
 // surface they swept (seed included), after the markers of coarse nodes that stopped were
 // carried up to `extension` [m] further, to the level set's surface or a crack. Any other sheet
 // (fallback): its new coarse triangles plus a strip of width `extension` beyond every front
-// edge whose nodes stopped.
-std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
+// edge whose nodes stopped. `body` names the body in the log.
+std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension, const std::string& body) {
     CrackMesh& cracks = s.fracture->cracks();
     cracks.refreshUnknowns();
     const Eigen::Vector3d offset = s.solver->mesh().offset();
@@ -383,10 +383,10 @@ std::map<int, TriangleMesh> sheetsToCut(BemFractureState& s, double extension) {
                     active += m.arrested ? 0 : 1;
                 }
         const FrontAdvanceResult& t = s.frontTally;
-        logf(LogLevel::Info, s.levelSet->name(), ": crack fronts of ", s.fronts->sheets().size(), " sheets, ",
-             markers, " markers (", active, " active), ", t.substeps, " sub-steps; arrested ",
-             t.arrestedMarkers, " (", t.leftBody, " at the surface, ", t.metCrack, " in cut cracks, ",
-             t.metSheet, " at other sheets, the rest at the end of their extension), ", t.slid,
+        logf(LogLevel::Info, body, ": crack fronts of ", s.fronts->sheets().size(), " sheets, ", markers,
+             " markers (", active, " active), ", t.substeps, " sub-steps; arrested ", t.arrestedMarkers, " (",
+             t.leftBody, " at the surface, ", t.metCrack, " in cut cracks, ", t.metSheet,
+             " at other sheets, the rest at the end of their extension), ", t.slid,
              " slides along the surface, ", s.fronts->sweptTriangles(),
              " swept triangles to cut; markers up to ", t.largestTargetShift / s.levelSet->voxelSize(),
              " voxels from where their coarse nodes aimed");
@@ -560,7 +560,8 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     // assembles them again at its next call).
     releaseIdleMatrices(*resident_, nullptr, &s, stats.steps, settings_.idleMatrixBudgetMB);
     const double meanSize = s.solver->mesh().meanDiameter();
-    for (const auto& [sheet, cut] : sheetsToCut(s, 0.5 * meanSize + 3.0 * s.levelSet->voxelSize())) {
+    for (const auto& [sheet, cut] :
+         sheetsToCut(s, 0.5 * meanSize + 3.0 * s.levelSet->voxelSize(), body.name())) {
         TriangleMesh named = cut;
         named.name = body.name() + " crack " + std::to_string(sheet);
         s.levelSet->cutAlongSurface(named, sheet);

@@ -815,7 +815,7 @@ std::vector<btFractureRigidBody*> btFractureDynamicsWorld::spawnFragments(btFrac
         FragmentSpec& spec = outcome.fragments[k];
         const PrincipalAxes axes = principalAxes(spec.inertiaAboutCom);
         TriangleMesh mesh = std::move(spec.collisionMesh);
-        mesh.name = parent.name() + "_" + std::to_string(k);
+        mesh.name = parent.rootName() + "_f" + std::to_string(++fragmentsOf_[parent.rootName()]);
         for (auto& v : mesh.vertices) v = axes.rotation.transpose() * (v - spec.centreOfMass);
 
         const bool breaks =
@@ -834,6 +834,7 @@ std::vector<btFractureRigidBody*> btFractureDynamicsWorld::spawnFragments(btFrac
         auto body = std::make_unique<btFractureRigidBody>(
             parent.material(), std::move(mesh), std::move(shape), spec.volume, axes.moments,
             parent.originalVolume(), settings, parentTransform * local);
+        body->rootName_ = parent.rootName();
         if (spec.cls == FragmentSpec::Class::KeepsParentSolver) {
             if (!parentStateTaken)
                 body->setFractureState(parent.releaseFractureState());

@@ -74,7 +74,9 @@
 
 #include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace btfracture {
@@ -184,6 +186,7 @@ private:
     std::vector<btFractureRigidBody*> touched_;                // fracturable bodies with contacts this step
     std::vector<btFractureRigidBody*> triggered_;              // ... whose impulse sum reached the threshold
     std::vector<std::unique_ptr<btFractureRigidBody>> owned_;  // fragments in the world, creation order
+    std::map<std::string, int> fragmentsOf_;  // fragments made so far per root name (their names' numbers)
     bool splitImpulseForFragments_ = true;
     double splitImpulseDepth_ = 0.0005;  // [m]
     int energyAuditSteps_ = 20;

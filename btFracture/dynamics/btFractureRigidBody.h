@@ -72,7 +72,11 @@ public:
         return upcast(const_cast<btCollisionObject*>(object));
     }
 
+    // Fragments are named <root>_f<n>, n counting the fragments of that root in the order the
+    // world made them (the runner's output names: FractureRecorder).
     const std::string& name() const { return mesh_.name; }
+    // The name of the unbroken body this one broke from (its own name if it never broke).
+    const std::string& rootName() const { return rootName_.empty() ? mesh_.name : rootName_; }
     const Material& material() const { return material_; }
     const TriangleMesh& mesh() const { return mesh_; }  // body frame [m]
     const FractureBodySettings& settings() const { return settings_; }
@@ -124,6 +128,7 @@ private:
     std::unique_ptr<FractureState> state_;
     double volume_ = 0.0;
     double originalVolume_ = 0.0;
+    std::string rootName_;  // set by btFractureDynamicsWorld for fragments
     double characteristicLength_ = 0.0;
     btTransform bodyInModelFrame_;
     std::vector<double> vertexCurvature_;

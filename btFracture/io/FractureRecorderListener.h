@@ -2,7 +2,8 @@
 #pragma once
 // Connects a btFractureDynamicsWorld to a FractureRecorder: every fracture event the world
 // reports becomes a statistics row, and its fragments get the recorder's stable names
-// ("bunny_f3"), which nameOf() gives to the outputs (the world's own fragment names differ).
+// ("bunny_f3"), which nameOf() gives to the outputs (the world names its fragments the same way
+// after their root body's name: the two agree where the output name is the body's name).
 //
 //   FractureRecorder recorder(dir + "/statistics.csv");
 //   FractureRecorderListener listener(recorder, dt);

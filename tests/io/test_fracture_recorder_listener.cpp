@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Zlib
 // The plumbing from a btFractureDynamicsWorld to the runner's records: a real fracture event
 // (the plane-split stand-in engine breaking a glass slab under a steel ball) becomes one
-// statistics row, and the fragments get the recorder's stable names and volumes.
+// statistics row, and the fragments get the recorder's stable names and volumes, which the
+// world's own fragment names follow.
 #include "../coupling/CouplingScene.h"
 
 #include <btFracture/io/FractureRecorder.h>
@@ -27,6 +28,7 @@ TEST(FractureRecorderListener, WorldEventsBecomeRowsAndStableNames) {
         listener.addOriginal(*scene.slab, "pane");
         scene.world->addFractureListener(&listener);
         const double slabVolume = scene.slab->volume();
+        const std::string slabName = scene.slab->name();
         for (int i = 0; i < 60 && recorder.events() == 0; ++i) scene.step();
         ASSERT_GE(recorder.events(), 1) << "the ball did not break the slab";
 
@@ -41,6 +43,12 @@ TEST(FractureRecorderListener, WorldEventsBecomeRowsAndStableNames) {
         std::vector<std::string> names;
         for (btFractureRigidBody* f : scene.fragments()) names.push_back(listener.nameOf(f));
         EXPECT_EQ(names, (std::vector<std::string>{"pane_f1", "pane_f2"}));
+        // The world names them the same way after their root body (the runner's bodies have
+        // their output names).
+        for (std::size_t k = 0; k < scene.fragments().size(); ++k) {
+            EXPECT_EQ(scene.fragments()[k]->name(), slabName + "_f" + std::to_string(k + 1));
+            EXPECT_EQ(scene.fragments()[k]->rootName(), slabName);
+        }
         EXPECT_EQ(listener.nameOf(scene.ball.get()), "");
         scene.world->removeFractureListener(&listener);
         recorder.close();
