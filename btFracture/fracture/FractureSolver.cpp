@@ -235,8 +235,8 @@ FractureStepRecord FractureSolver::step(int index) {
              " sigma_peak sqrt(pi a)); EST used that bound there");
     record.energyScale = energyScale_;
     if (record.energyScale < 1.0)
-        logf(LogLevel::Info, "fracture: step ", index, ": ", active_ == FractureMethod::Full ? "FULL" : "EST",
-             "'s SIFs scaled by ", record.energyScale,
+        logf(LogLevel::Debug, "fracture: step ", index, ": ",
+             active_ == FractureMethod::Full ? "FULL" : "EST", "'s SIFs scaled by ", record.energyScale,
              " so that the step's new crack releases no more than the energy of the load, ", releasable_,
              " J");
     if (record.gainLimitedNodes > 0)
@@ -394,11 +394,19 @@ FractureEventReport FractureSolver::run(const Eigen::VectorXd& q, double contact
                              (settings_.frontEdgeLength * elementSize_);
         budget = std::min(budget, std::max(1, static_cast<int>(std::lround(steps))));
     }
+    int scaled = 0;
+    double smallestScale = 1.0;
     for (int i = 0; i < budget && !cracks_.frontEdges().empty(); ++i) {
         const FractureStepRecord r = step(i);
         report.steps.push_back(r);
+        if (r.energyScale < 1.0) ++scaled, smallestScale = std::min(smallestScale, r.energyScale);
         if (r.advancedNodes == 0) break;
     }
+    if (scaled > 0)
+        logf(LogLevel::Info, "fracture: the energy bound scaled the SIFs of ", scaled, " of ",
+             report.steps.size(), " steps (factors down to ", smallestScale,
+             ") so that no step's new crack releases more than ", releasable_,
+             " J, the energy of the load (each step: debug log)");
     report.switchedToEstimator = wasFull && active_ == FractureMethod::Estimated;
     return report;
 }
