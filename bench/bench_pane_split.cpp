@@ -61,9 +61,6 @@ Split run(const fs::path& scenes, FractureMethod method, double speed) {
     if (!fractureWorld) throw Error("window_pane: no breakable body");
     FractureRecorder recorder;
     FractureRecorderListener names(recorder, scene.world.dt / scene.world.substeps);
-    for (const auto& body : world.bodies())
-        if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody))
-            names.addOriginal(*b, body.name);
     SceneFractureListener sceneListener(names, world);
     fractureWorld->addFractureListener(&sceneListener);
     for (int i = 0; i < scene.world.steps; ++i) world.stepFrame();

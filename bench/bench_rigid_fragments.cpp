@@ -243,15 +243,13 @@ int run(int argc, char** argv) {
     if (sleeping) fractureWorld->setFragmentSleeping(true);
     FractureRecorder recorder;
     FractureRecorderListener names(recorder, scene.world.dt / scene.world.substeps);
-    for (const auto& body : world.bodies())
-        if (btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody)) {
-            names.addOriginal(*b, body.name);
-            if (hullVertices >= 0) {  // the body's own shape keeps its budget; its fragments take this
+    if (hullVertices >= 0)  // the bodies' own shapes keep their budget; their fragments take this
+        for (const auto& body : world.bodies())
+            if (btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody)) {
                 FractureBodySettings settings = b->settings();
                 settings.shapeOptions.hullMaxVertices = hullVertices;
                 b->setSettings(settings);
             }
-        }
     SceneFractureListener sceneListener(names, world);
     fractureWorld->addFractureListener(&sceneListener);
     btEnterProfileZoneFunc* const previousEnter = btGetCurrentEnterProfileZoneFunc();

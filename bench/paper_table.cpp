@@ -153,9 +153,6 @@ Result run(const Case& c, const fs::path& scenes, const fs::path& out) {
     FractureRecorder recorder((dir / "statistics.csv").string());
     const double step = scene.world.dt / scene.world.substeps;
     FractureRecorderListener names(recorder, step);
-    for (const auto& body : world.bodies())
-        if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody))
-            names.addOriginal(*b, body.name);
     SceneFractureListener sceneListener(names, world);
     SizeProbe sizes;
     fractureWorld->addFractureListener(&sizes);  // before the scene listener retires the parent

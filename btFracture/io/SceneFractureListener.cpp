@@ -12,7 +12,11 @@
 namespace btfracture {
 
 SceneFractureListener::SceneFractureListener(FractureRecorderListener& recorder, SceneWorld& world)
-    : recorder_(recorder), world_(world) {}
+    : recorder_(recorder), world_(world) {
+    for (const auto& body : world.bodies())
+        if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody))
+            recorder.addOriginal(*b, body.name);
+}
 
 void SceneFractureListener::onFractureEvent(btFractureRigidBody& parent,
                                             const std::vector<btFractureRigidBody*>& fragments,

@@ -13,6 +13,7 @@ class SceneWorld;
 
 class SceneFractureListener : public FractureListener {
 public:
+    // Adds every breakable body of `world` to `recorder` under its scene name (addOriginal).
     SceneFractureListener(FractureRecorderListener& recorder, SceneWorld& world);
     void onFractureEvent(btFractureRigidBody& parent, const std::vector<btFractureRigidBody*>& fragments,
                          const FractureEventInfo& info) override;

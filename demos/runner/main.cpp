@@ -451,10 +451,7 @@ int simulate(const Options& options, const Setup& setup, SceneWorld& world, cons
     if (fractureWorld) {
         recorderListener.emplace(recorder, scene.world.dt / scene.world.substeps);
         for (const auto& body : world.bodies())
-            if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody)) {
-                recorderListener->addOriginal(*b, body.name);
-                ++breakable;
-            }
+            if (btFractureRigidBody::upcast(body.rigidBody)) ++breakable;
         sceneListener.emplace(*recorderListener, world);
         fractureWorld->addFractureListener(&*sceneListener);
     }

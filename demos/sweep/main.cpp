@@ -307,8 +307,6 @@ int runOne(const Options& options, const SweepSpec& spec, int index) {
         FractureRecorderListener recorderListener(recorder, scene.world.dt / scene.world.substeps);
         const btRigidBody *target = nullptr, *impactor = nullptr;
         for (const auto& body : world.bodies()) {
-            if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody))
-                recorderListener.addOriginal(*b, body.name);
             if (body.name == spec.target) target = body.rigidBody;
             if (body.name == spec.impactor) impactor = body.rigidBody;
         }

@@ -104,9 +104,6 @@ Outcome runScenario(const Expect& expect) {
     FractureRecorder recorder;
     const double step = scene.world.dt / scene.world.substeps;
     FractureRecorderListener names(recorder, step);
-    for (const auto& body : world.bodies())
-        if (const btFractureRigidBody* b = btFractureRigidBody::upcast(body.rigidBody))
-            names.addOriginal(*b, body.name);
     SceneFractureListener sceneListener(names, world);
     FractureEventAccounting probe(step,
                                   [&](const btFractureRigidBody& parent) { return names.nameOf(&parent); });
