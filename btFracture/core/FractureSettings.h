@@ -66,6 +66,13 @@ struct CrackSettings {
     // 5 %, 1.1215 overestimates 1.7-3x (tests/crack); on surface-breaking cracks EST stays below
     // FULL (README, Known limits).
     double estimatorGeometryFactor = 2.0 / M_PI;
+    // EST's fronts that reach the surface end on it, as FULL's do, instead of just inside, and a
+    // front node on the surface takes the local stress at the middle of its front edge (the edge's
+    // value, as FULL's displacement correlation gives its end nodes; both ends of a through crack in
+    // a thin wall on its two faces then move together). Off by default: it changes every EST
+    // outcome and the shipped scenes and the accuracy study are measured without it (README,
+    // Known limits); on in window_pane.
+    bool estimatorSurfaceFronts = false;
     bool estimatorUpdate = true;  // the right-hand-side update of §4.3
     // If > 0, the §4.3 update may raise a front's estimated K_eff at most this factor above the
     // estimate from the event's crack-free stress; SIFs above it are scaled down to it, and each

@@ -14,9 +14,37 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
+#include <vector>
 
 namespace btfracture {
+namespace {
+
+// Where EST reads each front node's local stress with CrackSettings::estimatorSurfaceFronts: a node
+// on the surface at the middle of its front edge, towards its neighbours inside the body if it has
+// any, else its neighbours on the surface (the edge across a thin wall); every other node at itself.
+std::map<int, Eigen::Vector3d> surfaceFrontStressPoints(const CrackMesh& cracks) {
+    std::map<int, std::vector<int>> neighbours;
+    for (const auto& e : cracks.frontEdges()) {
+        neighbours[e.a].push_back(e.b);
+        neighbours[e.b].push_back(e.a);
+    }
+    std::map<int, Eigen::Vector3d> points;
+    for (const auto& [node, around] : neighbours) {
+        if (!cracks.onSurface(node)) continue;
+        std::vector<int> chosen;
+        for (const int n : around)
+            if (!cracks.onSurface(n)) chosen.push_back(n);
+        if (chosen.empty()) chosen = around;
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        for (const int n : chosen) sum += 0.5 * (cracks.node(node) + cracks.node(n));
+        points[node] = sum / static_cast<double>(chosen.size());
+    }
+    return points;
+}
+
+}  // namespace
 
 FractureSolver::FractureSolver(const ElasticSolver& solver, MaterialField field, FractureSettings settings)
     : solver_(solver), field_(std::move(field)), settings_(settings) {
@@ -121,21 +149,25 @@ std::vector<FrontSifs> FractureSolver::frontSifs(bool activeOnly) {
     out.reserve(frames.size());
     gainLimited_ = 0;
     const std::vector<double> sheetAreas = sheetAreasInBody();
+    const std::map<int, Eigen::Vector3d> surfacePoints = settings_.estimatorSurfaceFronts
+                                                             ? surfaceFrontStressPoints(cracks_)
+                                                             : std::map<int, Eigen::Vector3d>{};
     for (const FrontSifs& f : frames) {
         if (skip(f)) continue;
         double area = 0.0;
         if (!cracks_.trianglesAtNode(f.node).empty())
             area = sheetAreas[cracks_.sheetOf(cracks_.trianglesAtNode(f.node)[0])];
-        Eigen::Matrix3d local = stress.stressAt(f.position);
+        const auto surfacePoint = surfacePoints.find(f.node);
+        const Eigen::Vector3d at = surfacePoint == surfacePoints.end() ? f.position : surfacePoint->second;
+        Eigen::Matrix3d local = stress.stressAt(at);
         if (boundStress(local, kMaxGeometryFactor / settings_.estimatorGeometryFactor * peakStress_))
             ++stressBounded_;
         FrontSifs e =
             estimateSifs(f.frame, local, area, m.compressiveFactor(), settings_.estimatorGeometryFactor);
         if (limit > 0.0) {  // the §4.3 update raises K_eff at most `limit` times (FractureSettings)
-            const double K = Keff(e),
-                         bound = limit *
-                                 Keff(estimateSifs(f.frame, crackFree->stressAt(f.position), area,
-                                                   m.compressiveFactor(), settings_.estimatorGeometryFactor));
+            const double K = Keff(e), bound = limit * Keff(estimateSifs(f.frame, crackFree->stressAt(at),
+                                                                        area, m.compressiveFactor(),
+                                                                        settings_.estimatorGeometryFactor));
             if (K > bound) {
                 const double scale = bound / K;
                 e.KI *= scale, e.KII *= scale, e.KIII *= scale;
@@ -270,9 +302,10 @@ FractureStepRecord FractureSolver::step(int index) {
         }
     }
     const bool full = active_ == FractureMethod::Full;
-    const GrowthResult growth = growFronts(
-        cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * elementSize_, arrested_,
-        full ? FoldGuard::Hold : FoldGuard::Off, full ? SurfaceReach::OnSurface : SurfaceReach::Inside);
+    const GrowthResult growth =
+        growFronts(cracks_, advances, solver_.mesh(), 1.5 * settings_.frontEdgeLength * elementSize_,
+                   arrested_, full ? FoldGuard::Hold : FoldGuard::Off,
+                   full || settings_.estimatorSurfaceFronts ? SurfaceReach::OnSurface : SurfaceReach::Inside);
     int stopped = 0;
     for (const int node : stopAfter) {
         const auto moved = growth.newNode.find(node);

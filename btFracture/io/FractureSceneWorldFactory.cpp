@@ -29,6 +29,7 @@ std::unique_ptr<btDiscreteDynamicsWorld> FractureSceneWorldFactory::createWorld(
     settings.voxelFronts = scene.effects.voxelFronts;
     settings.idleMatrixBudgetMB = scene.effects.idleMatrixBudgetMB;
     settings.fracture.surfaceSeeds = scene.effects.surfaceSeeds;
+    settings.fracture.estimatorSurfaceFronts = scene.effects.estimatorSurfaceFronts;
     auto engine = std::make_unique<BemFractureEngine>(settings);
     if (cutObserver_) engine->setCutObserver(cutObserver_);
     world->setFractureEngine(std::move(engine));

@@ -256,7 +256,7 @@ private:
         requireObject(value, path, "an object");
         allowOnly(value, path,
                   {"outputs", "seed", "crack_cut", "idle_matrix_budget_mb", "surface_seeds",
-                   "fragment_sleeping", "fracture"});
+                   "estimator_surface_fronts", "fragment_sleeping", "fracture"});
         if (value.contains("outputs")) {
             const Json& list = value["outputs"];
             const std::string lpath = child(path, "outputs");
@@ -287,6 +287,9 @@ private:
                             "a number of megabytes >= 0");
         if (value.contains("surface_seeds"))
             scene.effects.surfaceSeeds = boolean(value["surface_seeds"], child(path, "surface_seeds"));
+        if (value.contains("estimator_surface_fronts"))
+            scene.effects.estimatorSurfaceFronts =
+                boolean(value["estimator_surface_fronts"], child(path, "estimator_surface_fronts"));
         if (value.contains("fragment_sleeping"))
             scene.effects.fragmentSleeping =
                 boolean(value["fragment_sleeping"], child(path, "fragment_sleeping"));

@@ -125,6 +125,8 @@ struct SceneEffects {
     double idleMatrixBudgetMB = BemFractureEngineSettings().idleMatrixBudgetMB;
     // FULL seeds surface-breaking cracks (CrackSettings::surfaceSeeds).
     bool surfaceSeeds = BemFractureEngineSettings().fracture.surfaceSeeds;
+    // EST's fronts end on the surface (CrackSettings::estimatorSurfaceFronts).
+    bool estimatorSurfaceFronts = BemFractureEngineSettings().fracture.estimatorSurfaceFronts;
     // Fragments sleep by their size in islands of touching bodies
     // (btFractureDynamicsWorld::setFragmentSleeping); off: Bullet's thresholds and islands.
     bool fragmentSleeping = false;

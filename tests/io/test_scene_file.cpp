@@ -91,7 +91,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
                   "image": {"width": 320, "height": 200, "projection": "orthographic", "shading": "flat",
                             "view": [0, 1, 0]}},
       "effects": {"outputs": ["png", "csv", "obj"], "seed": 42, "crack_cut": "coarse_sheet",
-                  "idle_matrix_budget_mb": 64, "surface_seeds": true, "fragment_sleeping": true,
+                  "idle_matrix_budget_mb": 64, "surface_seeds": true, "estimator_surface_fronts": true, "fragment_sleeping": true,
                   "fracture": {"pane": {"method": "hybrid", "hybrid_threshold": 3000, "energy_bound": false, "refracture_depth": 2,
                                         "impulse_threshold": 0.5,
                                         "material_noise": {"amplitude": 0.2, "seed": 7}},
@@ -127,6 +127,7 @@ TEST(SceneFile, EffectsResolutionsAndMotion) {
     EXPECT_EQ(s.effects.seed, 42u);
     EXPECT_DOUBLE_EQ(s.effects.idleMatrixBudgetMB, 64.0);
     EXPECT_TRUE(s.effects.surfaceSeeds);
+    EXPECT_TRUE(s.effects.estimatorSurfaceFronts);
     EXPECT_TRUE(s.effects.fragmentSleeping);
     EXPECT_FALSE(s.effects.voxelFronts);
     EXPECT_EQ(s.outputs.pngEveryNSteps, 5);
@@ -185,7 +186,9 @@ TEST(SceneFile, BadEffectsNameTheirPath) {
          "test.json: effects.fracture.ball.impulse_threshold: expected a positive number [N s], got 0"},
         {R"("effects": {"fractures": {}})",
          "test.json: effects.fractures: unknown key (expected one of: outputs, seed, crack_cut, "
-         "idle_matrix_budget_mb, surface_seeds, fragment_sleeping, fracture)"},
+         "idle_matrix_budget_mb, surface_seeds, estimator_surface_fronts, fragment_sleeping, fracture)"},
+        {R"("effects": {"estimator_surface_fronts": 0})",
+         "test.json: effects.estimator_surface_fronts: expected true or false, got 0"},
         {R"("effects": {"fragment_sleeping": 1})",
          "test.json: effects.fragment_sleeping: expected true or false, got 1"},
         {R"("effects": {"surface_seeds": "yes"})",

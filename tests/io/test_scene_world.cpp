@@ -259,17 +259,22 @@ TEST(SceneWorld, FractureFactoryPassesTheEngineEffects) {
          "material": "glass"}])";
     const FractureSceneWorldFactory factory(0);
     SceneWorld plain(sceneOf("{" + bodies + R"(, "effects": {"fracture": {"slab": true}}})"), factory);
-    SceneWorld set(sceneOf("{" + bodies +
-                           R"(, "effects": {"surface_seeds": true, "idle_matrix_budget_mb": 0,
+    SceneWorld set(
+        sceneOf(
+            "{" + bodies +
+            R"(, "effects": {"surface_seeds": true, "estimator_surface_fronts": true, "idle_matrix_budget_mb": 0,
                                                   "crack_cut": "coarse_sheet", "fragment_sleeping": true,
                                                   "fracture": {"slab": true}}})"),
-                   factory);
+        factory);
     ASSERT_NE(engineOf(plain), nullptr);
     ASSERT_NE(engineOf(set), nullptr);
     const BemFractureEngineSettings defaults;
     EXPECT_EQ(engineOf(plain)->settings().fracture.surfaceSeeds, defaults.fracture.surfaceSeeds);
+    EXPECT_EQ(engineOf(plain)->settings().fracture.estimatorSurfaceFronts,
+              defaults.fracture.estimatorSurfaceFronts);
     EXPECT_EQ(engineOf(plain)->settings().idleMatrixBudgetMB, defaults.idleMatrixBudgetMB);
     EXPECT_TRUE(engineOf(set)->settings().fracture.surfaceSeeds);
+    EXPECT_TRUE(engineOf(set)->settings().fracture.estimatorSurfaceFronts);
     EXPECT_EQ(engineOf(set)->settings().idleMatrixBudgetMB, 0.0);
     EXPECT_FALSE(engineOf(set)->settings().voxelFronts);
     const auto sleepingOf = [](SceneWorld& world) {
