@@ -140,6 +140,36 @@ void dropIslands(FloatGrid& phi, const BoolGrid& component, float background) {
     }
 }
 
+// Puts a surface between every two face-neighbour voxels of the band that are both off (+-background)
+// with opposite signs: a filled crack voxel beside a slab voxel left outside is such a pair, and
+// OpenVDB meshes only where a voxel is on, so the fragment's surface would have a hole there. Both
+// turn on at +-half a voxel (the surface on their shared face); voxels at half a voxel or more
+// count as wholly inside or outside in the mass, so the volume does not change. Returns the pairs.
+int closeSignJumps(FloatGrid& phi, const openvdb::BoolTree& band) {
+    const float half = static_cast<float>(0.5 * phi.voxelSize()[0]);
+    std::vector<std::pair<Coord, float>> turnOn;
+    int pairs = 0;
+    {
+        auto acc = phi.getConstAccessor();
+        for (auto it = band.cbeginValueOn(); it; ++it) {
+            const Coord c = it.getCoord();
+            if (acc.isValueOn(c)) continue;
+            const bool inside = acc.getValue(c) < 0.0f;
+            for (int axis = 0; axis < 3; ++axis) {
+                Coord n = c;
+                n[axis] += 1;
+                if (acc.isValueOn(n) || (acc.getValue(n) < 0.0f) == inside) continue;
+                ++pairs;
+                turnOn.emplace_back(c, inside ? -half : half);
+                turnOn.emplace_back(n, inside ? half : -half);
+            }
+        }
+    }
+    auto acc = phi.getAccessor();
+    for (const auto& [ijk, value] : turnOn) acc.setValueOn(ijk, value);
+    return pairs;
+}
+
 // Connected components of the object's interior (6-connected voxels), in a deterministic order
 // (most voxels first, then lowest first voxel), without dust: components of too few voxels to
 // matter (their volume and count are added to dustVolume and dustCount).
@@ -290,6 +320,9 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings, 
             }
         }
         dropIslands(*phi, *components[k].mask, background);
+        if (const int jumps = closeSignJumps(*phi, band); jumps > 0)
+            logf(LogLevel::Debug, body.name, "/", fragments.size(), ": ", jumps,
+                 " voxel pairs jump from inside to outside; surface put on their shared faces");
         serially([&] { openvdb::tools::pruneLevelSet(phi->tree()); });
 
         Fragment f;

@@ -13,6 +13,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -272,6 +273,34 @@ TEST(Fragments, AChipBetweenCloseCutsIsClaimedByNoOtherPiece) {
                     100.0 * f.fractionOfOriginal, own.size());
         EXPECT_EQ(own.size(), 1u) << f.name;
     }
+}
+
+// A star of cracks through the thickness, meeting at a line inside the box (window_pane's radial
+// cracks): three reach the surface and cut the box into three pieces, two short ones end inside
+// (incomplete). Around the meeting line, slab voxels that no crack voxel hands to a piece sit
+// beside filled crack voxels; every piece's surfaces must still be closed, and hold its volume.
+TEST(Fragments, CracksMeetingInsideLeaveClosedSurfaces) {
+    LevelSetBody box = makeBox();
+    const Eigen::Vector3d centre(0.047, 0.031, 0.025);
+    constexpr int kRays = 5;
+    for (int i = 0; i < kRays; ++i) {
+        const double angle = 2.0 * M_PI * i / kRays;
+        const Eigen::Vector3d d(std::cos(angle), std::sin(angle), 0.0);
+        const double length = i % 2 == 0 ? 0.08 : 0.012;  // through the surface, or ending inside
+        box.cutAlongSurface(test::sheet(centre + 0.5 * length * d, 0.5 * length * d, {0, 0, 0.03}, "ray"), i);
+    }
+    const auto pieces = box.fragments(FragmentSettings(), test::kCollisionTriangles);
+    ASSERT_EQ(pieces.size(), 3u);
+    double sum = 0.0;
+    for (const Fragment& f : pieces) {
+        sum += f.mass.volume;
+        expectClosedManifold(f.collisionMesh);
+        expectClosedManifold(f.visualMesh);
+        if (f.surfaceMesh.triangles.empty()) continue;
+        expectClosedManifold(f.surfaceMesh);
+        EXPECT_NEAR(inspectMesh(f.surfaceMesh).signedVolume / f.mass.volume, 1.0, 0.02) << f.name;
+    }
+    EXPECT_NEAR(sum / box.massProperties().volume, 1.0, 0.005);
 }
 
 // Three corner cuts and a plane give pieces in every class of §5.2.
