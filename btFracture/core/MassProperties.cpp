@@ -40,10 +40,13 @@ MassProperties computeMassProperties(const TriangleMesh& mesh) {
     return p;
 }
 
-double enclosedVolume(const TriangleMesh& mesh) {
+double enclosedVolume(const TriangleMesh& mesh, const Eigen::Vector3d& about) {
     double volume = 0.0;
-    for (const auto& t : mesh.triangles)
-        volume += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]])) / 6.0;
+    for (const auto& t : mesh.triangles) {
+        const Eigen::Vector3d a = mesh.vertices[t[0]] - about, b = mesh.vertices[t[1]] - about,
+                              c = mesh.vertices[t[2]] - about;
+        volume += a.dot(b.cross(c)) / 6.0;
+    }
     return volume;
 }
 

@@ -18,8 +18,10 @@ struct MassProperties {
 // Throws btfracture::Error naming mesh.name if the enclosed volume is not positive.
 MassProperties computeMassProperties(const TriangleMesh& mesh);
 
-// Signed volume enclosed by the mesh [m^3] (positive for a closed outward mesh); never throws.
-double enclosedVolume(const TriangleMesh& mesh);
+// Signed volume enclosed by the mesh [m^3] (positive for a closed outward mesh), summed over the
+// tetrahedra from `about` to each triangle: the same for any point if the mesh is closed, not if
+// it has holes. Never throws.
+double enclosedVolume(const TriangleMesh& mesh, const Eigen::Vector3d& about = Eigen::Vector3d::Zero());
 
 // Sum of the triangle areas [m^2].
 double surfaceArea(const TriangleMesh& mesh);

@@ -124,6 +124,9 @@ void validateSpec(const FragmentSpec& spec, double originalVolume, const std::st
         problem << "volume " << spec.volume << " m^3 above the original body's " << originalVolume << " m^3";
     else if (!spec.centreOfMass.allFinite())
         problem << "non-finite centre of mass";
+    else if (const double v = enclosedVolume(spec.collisionMesh, spec.centreOfMass); !(v > 0.0))
+        problem << "collision mesh encloses " << v
+                << " m^3 about the fragment's centre of mass (need > 0: closed, normals outward)";
     else if (!J.allFinite() || (J - J.transpose()).norm() > 1e-9 * J.norm())
         problem << "inertia tensor not finite and symmetric";
     else if (spec.carriedState && spec.cls != FragmentSpec::Class::Breakable)

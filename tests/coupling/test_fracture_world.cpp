@@ -611,6 +611,32 @@ TEST(FractureWorld, InconsistentFragmentIsRefusedNotThrown) {
     EXPECT_NE(messages.back().find("above the original body's"), std::string::npos) << messages.back();
 }
 
+TEST(FractureWorld, InsideOutFragmentMeshIsRefusedNotThrown) {
+    // An engine whose fragment's collision mesh faces inward (or, open, encloses a negative volume
+    // about the fragment's centre of mass): refused before the swap, logged, nothing escapes.
+    struct Flipping : PlaneSplitFractureEngine {
+        FractureOutcome fracture(btFractureRigidBody& body, const std::vector<BodyContact>& contacts,
+                                 FractureStatistics& stats) override {
+            FractureOutcome out = PlaneSplitFractureEngine::fracture(body, contacts, stats);
+            if (!out.fragments.empty())
+                for (auto& t : out.fragments.front().collisionMesh.triangles) std::swap(t[1], t[2]);
+            return out;
+        }
+    };
+    Scene scene;
+    scene.world->setFractureEngine(std::make_unique<Flipping>());
+    std::vector<std::string> messages;
+    setLogSink([&](LogLevel, const std::string& m) { messages.push_back(m); });
+    EXPECT_NO_THROW(scene.step(30));
+    setLogSink(nullptr);
+    const FractureStatistics& s = scene.world->fractureStatistics();
+    EXPECT_EQ(s.engineFailures, 1u);
+    EXPECT_EQ(s.fractureEvents, 0u);
+    EXPECT_TRUE(scene.slab->isInWorld());
+    ASSERT_FALSE(messages.empty());
+    EXPECT_NE(messages.back().find("collision mesh encloses -"), std::string::npos) << messages.back();
+}
+
 TEST(FractureWorld, RemovingAFragmentHandsItToTheCaller) {
     Scene scene;
     scene.step(10);
