@@ -80,7 +80,7 @@ public:
     CollisionShapeKind kind() const { return kind_; }  // the kind actually built
     double margin() const { return margin_; }
     // The convex pieces as collision sees them (shrunk hull points + margin), body frame; empty
-    // for GImpactMesh. Used to separate overlapping fragments with libccd.
+    // for GImpactMesh. Used to separate overlapping fragments (ConvexPenetration.h).
     const std::vector<ConvexPolytope>& convexPieces() const { return pieces_; }
     // Rebuilds the shape from new convex pieces (body frame; one per piece of convexPieces(), each
     // with its margin): fragments whose pieces were cut apart (FragmentSeparation.h). Throws

@@ -2,7 +2,7 @@
 #pragma once
 // Separates freshly spawned fragments whose collision shapes overlap (paper §5.2: fragments
 // take the parent's place; overlapping shapes would make the replayed step push them apart
-// violently, "popping"). Each overlap found by libccd (geometry/ConvexPenetration.h) is removed
+// violently, "popping"). Each overlap found by convexPenetration (geometry/ConvexPenetration.h) is removed
 // by translating the two fragments apart along the penetration direction, split in inverse
 // proportion to their masses so that their common centre of mass does not move (unless one of
 // them is blocked by static geometry, then the other moves alone). Positions only:

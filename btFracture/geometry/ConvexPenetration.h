@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Zlib
 #pragma once
-// Penetration depth between two convex polytopes (libccd, double precision), used to separate
+// Penetration depth between two convex polytopes (double precision), used to separate
 // freshly spawned fragment hulls before the replayed step (paper §5.2).
 #include <Eigen/Core>
 
@@ -22,9 +22,11 @@ struct Penetration {
     Eigen::Vector3d point = Eigen::Vector3d::Zero();      // a point in the overlap [m]
 };
 
-// GJK + EPA (libccd ccdGJKPenetration): the minimal translation, to a tolerance of 1e-8 of the
-// operands' size. (MPR, libccd's other method, measures along the line between the centres and
-// overestimates badly for thin neighbours that share a face, which fragments do.) Throws
+// The minimal translation, to about 1e-10 of the operands' size: libccd's GJK tells whether the
+// inflated polytopes touch; then GJK and EPA (bounded: at most 128 and 256 iterations) on the
+// bare polytopes give their distance or depth, and the margins add to it exactly (A + ball(ra)
+// - (B + ball(rb)) is (A - B) + ball(ra + rb)). Not libccd's EPA: on fragments' pieces it can
+// loop for ever (danfis/libccd#7; `falling_boxes` hung in it). Deterministic. Throws
 // btfracture::Error when an operand has no points, a non-finite point or a negative margin.
 Penetration convexPenetration(const ConvexPolytope& a, const ConvexPolytope& b);
 

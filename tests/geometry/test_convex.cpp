@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Zlib
-// Convex hulls (exact quickhull) and libccd penetration between hulls (GJK + EPA).
+// Convex hulls (exact quickhull) and the penetration between hulls (GJK + EPA).
 #include "TestShapes.h"
 
 #include <btFracture/core/Error.h>
@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
+#include <utility>
 
 namespace btfracture {
 namespace {
@@ -211,6 +213,110 @@ TEST(ConvexPenetration, SeparatedHullsDoNotOverlap) {
     const Penetration c = convexPenetration(placed(unit, Eigen::Isometry3d::Identity()), placed(unit, poseB));
     EXPECT_FALSE(c.overlapping);
     EXPECT_EQ(c.depth, 0.0);
+}
+
+// Exact minimal translation of b out of a for bare polytopes, by the separating axes: the face
+// normals of both hulls and the cross products of their edges. Returns (depth, direction).
+std::pair<double, Eigen::Vector3d> satDepth(const std::vector<Eigen::Vector3d>& a,
+                                            const std::vector<Eigen::Vector3d>& b) {
+    const TriangleMesh ha = convexHullMesh(a, "a"), hb = convexHullMesh(b, "b");
+    std::vector<Eigen::Vector3d> axes;
+    std::vector<Eigen::Vector3d> edgesA, edgesB;
+    for (const TriangleMesh* h : {&ha, &hb})
+        for (const auto& t : h->triangles) {
+            const Eigen::Vector3d& p = h->vertices[t[0]];
+            axes.push_back((h->vertices[t[1]] - p).cross(h->vertices[t[2]] - p).normalized());
+            for (int k = 0; k < 3; ++k)
+                (h == &ha ? edgesA : edgesB).push_back(h->vertices[t[(k + 1) % 3]] - h->vertices[t[k]]);
+        }
+    for (const auto& ea : edgesA)
+        for (const auto& eb : edgesB) {
+            const Eigen::Vector3d n = ea.cross(eb);
+            if (n.norm() > 1e-9 * ea.norm() * eb.norm()) axes.push_back(n.normalized());
+        }
+    double best = std::numeric_limits<double>::infinity();
+    Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+    for (const auto& axis : axes)
+        for (const double sign : {1.0, -1.0}) {
+            const Eigen::Vector3d d = sign * axis;
+            double maxA = -std::numeric_limits<double>::infinity(),
+                   minB = std::numeric_limits<double>::infinity();
+            for (const auto& p : a) maxA = std::max(maxA, p.dot(d));
+            for (const auto& p : b) minB = std::min(minB, p.dot(d));
+            if (maxA - minB < best) {
+                best = maxA - minB;
+                direction = d;
+            }
+        }
+    return {best, direction};
+}
+
+// Random polytopes (8-40 points in flattened ellipsoids, some points repeated, some on a common
+// plane) in random overlapping poses, with and without margins: the depth is the separating-axis
+// minimum to 1e-9 of their size, and moving b by it along the direction leaves them touching.
+// Pieces of one box cut by a plane (sharing a face, or pushed 1e-7 into each other) too: the case
+// libccd's EPA looped on for ever (danfis/libccd#7) came from such pieces.
+TEST(ConvexPenetration, DepthIsTheSeparatingAxisMinimum) {
+    std::mt19937 rng(20261207);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto randomPoints = [&](int n) {
+        const Eigen::Vector3d axes(0.1 + 0.9 * std::abs(unit(rng)), 0.1 + 0.9 * std::abs(unit(rng)),
+                                   0.05 + 0.5 * std::abs(unit(rng)));
+        std::vector<Eigen::Vector3d> points;
+        for (int i = 0; i < n; ++i) {
+            Eigen::Vector3d p(unit(rng), unit(rng), unit(rng));
+            if (i % 5 == 4) p.z() = 1.0;  // a common plane
+            points.push_back(p.normalized().cwiseProduct(axes));
+            if (i % 7 == 6) points.push_back(points.back());  // a repeated point
+        }
+        return points;
+    };
+    int overlapping = 0;
+    for (int trial = 0; trial < 150; ++trial) {
+        const std::vector<Eigen::Vector3d> a = randomPoints(8 + trial % 33);
+        std::vector<Eigen::Vector3d> b = randomPoints(8 + (trial * 7) % 33);
+        const Eigen::Quaterniond turn =
+            Eigen::Quaterniond(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
+        const Eigen::Vector3d shift = 0.8 * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+        for (auto& p : b) p = turn * p + shift;
+        const auto [reference, axis] = satDepth(a, b);
+        for (const double margin : {0.0, 0.01}) {
+            const Penetration pen = convexPenetration({a, margin}, {b, margin});
+            const double expected = reference + 2.0 * margin;
+            ASSERT_EQ(pen.overlapping, expected > 1e-9) << trial << " " << expected;
+            if (!pen.overlapping || reference < 0.0) continue;
+            ++overlapping;
+            EXPECT_NEAR(pen.depth, expected, 1e-9) << trial;
+            EXPECT_NEAR(pen.direction.norm(), 1.0, 1e-12);
+            std::vector<Eigen::Vector3d> moved = b;
+            for (auto& p : moved) p += (pen.depth - 2.0 * margin + 1e-7) * pen.direction;
+            EXPECT_GT(satDepth(a, moved).first, -2e-7) << trial;  // touching, not apart
+            EXPECT_LT(satDepth(a, moved).first, 0.0) << trial;    // nor still inside
+        }
+    }
+    EXPECT_GT(overlapping, 100);
+
+    // Two pieces of a box cut by an oblique plane: touching (depth = the margins), and pushed
+    // 1e-7 into each other along the cut's normal.
+    const std::vector<Eigen::Vector3d> box = boxCorners({0.05, 0.03, 0.02});
+    const Eigen::Vector3d n = Eigen::Vector3d(1.0, 0.3, -0.2).normalized();
+    const ConvexPolytope whole{box, 0.0};
+    const ConvexPolytope left = clipConvexPolytope(whole, n, 0.004).polytope;
+    const ConvexPolytope right = clipConvexPolytope(whole, -n, -0.004).polytope;
+    for (const double margin : {0.0, 0.001}) {
+        const Penetration touching = convexPenetration({left.points, margin}, {right.points, margin});
+        if (margin > 0.0) {
+            ASSERT_TRUE(touching.overlapping);
+            EXPECT_NEAR(touching.depth, 2.0 * margin, 1e-12);
+            EXPECT_NEAR(touching.direction.dot(n), 1.0, 1e-9);
+        }
+        std::vector<Eigen::Vector3d> pushed = right.points;
+        for (auto& p : pushed) p -= 1e-7 * n;
+        const Penetration in = convexPenetration({left.points, margin}, {pushed, margin});
+        ASSERT_TRUE(in.overlapping);
+        EXPECT_NEAR(in.depth, 1e-7 + 2.0 * margin, 1e-12);
+        EXPECT_NEAR(in.direction.dot(n), 1.0, 1e-9);
+    }
 }
 
 TEST(ConvexClip, CutBoxKeepsItsPartAndReportsItsVolume) {
