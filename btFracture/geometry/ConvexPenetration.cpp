@@ -13,7 +13,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
+#include <set>
 #include <sstream>
 #include <utility>
 
@@ -225,28 +225,30 @@ std::pair<double, Eigen::Vector3d> epa(const Difference& cso, std::vector<Eigen:
         if (makeFace(t[0], t[1], t[2], f)) faces.push_back(f);
     }
     const double tolerance = 1e-10 * scale;
-    std::size_t nearest = 0;
-    for (int iteration = 0; iteration < kEpaIterations && !faces.empty(); ++iteration) {
-        nearest = 0;
+    const auto nearestFace = [&faces] {
+        std::size_t nearest = 0;
         for (std::size_t i = 1; i < faces.size(); ++i)
             if (faces[i].d < faces[nearest].d) nearest = i;
-        const Face f = faces[nearest];
+        return faces[nearest];
+    };
+    for (int iteration = 0; iteration < kEpaIterations && !faces.empty(); ++iteration) {
+        const Face f = nearestFace();
         const Eigen::Vector3d s = cso.support(f.n);
         if (f.n.dot(s) - f.d <= tolerance) break;
         // Replace the faces that see s by the fan from s over their horizon.
         v.push_back(s);
         const int si = static_cast<int>(v.size()) - 1;
-        std::map<std::pair<int, int>, int> edges;  // directed edges of the visible faces
+        std::set<std::pair<int, int>> edges;  // directed edges of the visible faces
         std::vector<Face> kept;
         for (const Face& g : faces) {
             if (g.n.dot(s - v[g.c[0]]) > tolerance) {
-                for (int k = 0; k < 3; ++k) ++edges[{g.c[k], g.c[(k + 1) % 3]}];
+                for (int k = 0; k < 3; ++k) edges.insert({g.c[k], g.c[(k + 1) % 3]});
             } else {
                 kept.push_back(g);
             }
         }
         bool valid = true;
-        for (const auto& [edge, count] : edges) {
+        for (const auto& edge : edges) {
             if (edges.count({edge.second, edge.first})) continue;  // inside the visible region
             Face g;
             if (!makeFace(edge.first, edge.second, si, g) || g.d < -tolerance) {
@@ -259,10 +261,8 @@ std::pair<double, Eigen::Vector3d> epa(const Difference& cso, std::vector<Eigen:
         faces = std::move(kept);
     }
     if (faces.empty()) return {0.0, Eigen::Vector3d::Zero()};
-    nearest = 0;
-    for (std::size_t i = 1; i < faces.size(); ++i)
-        if (faces[i].d < faces[nearest].d) nearest = i;
-    return {std::max(0.0, faces[nearest].d), faces[nearest].n};
+    const Face f = nearestFace();
+    return {std::max(0.0, f.d), f.n};
 }
 
 }  // namespace

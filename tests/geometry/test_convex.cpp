@@ -290,8 +290,9 @@ TEST(ConvexPenetration, DepthIsTheSeparatingAxisMinimum) {
             EXPECT_NEAR(pen.direction.norm(), 1.0, 1e-12);
             std::vector<Eigen::Vector3d> moved = b;
             for (auto& p : moved) p += (pen.depth - 2.0 * margin + 1e-7) * pen.direction;
-            EXPECT_GT(satDepth(a, moved).first, -2e-7) << trial;  // touching, not apart
-            EXPECT_LT(satDepth(a, moved).first, 0.0) << trial;    // nor still inside
+            const double left = satDepth(a, moved).first;
+            EXPECT_GT(left, -2e-7) << trial;  // touching, not apart
+            EXPECT_LT(left, 0.0) << trial;    // nor still inside
         }
     }
     EXPECT_GT(overlapping, 100);
