@@ -7,6 +7,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -26,7 +28,8 @@ void writeAll(int fd, const std::string& text) {
 
 }  // namespace
 
-IsolatedRun runIsolated(const std::function<std::string()>& run, double memoryLimitMegabytes) {
+IsolatedRun runIsolated(const std::function<std::string()>& run, double memoryLimitMegabytes,
+                        double cpuLimitSeconds) {
     std::fflush(stdout);
     std::fflush(stderr);
     int fds[2];
@@ -42,6 +45,11 @@ IsolatedRun runIsolated(const std::function<std::string()>& run, double memoryLi
                 const rlim_t bytes = static_cast<rlim_t>(memoryLimitMegabytes * 1024.0 * 1024.0);
                 const rlimit limit{bytes, bytes};
                 if (setrlimit(RLIMIT_AS, &limit) != 0) throw Error("setrlimit(RLIMIT_AS) failed");
+            }
+            if (cpuLimitSeconds > 0.0) {
+                const rlim_t seconds = static_cast<rlim_t>(std::ceil(cpuLimitSeconds));
+                const rlimit limit{seconds, seconds + 10};  // SIGXCPU at the soft limit
+                if (setrlimit(RLIMIT_CPU, &limit) != 0) throw Error("setrlimit(RLIMIT_CPU) failed");
             }
             writeAll(fds[1], "R" + run());
         } catch (const std::bad_alloc&) {
@@ -74,6 +82,9 @@ IsolatedRun runIsolated(const std::function<std::string()>& run, double memoryLi
         r.text = text.substr(1);
     } else if (!text.empty() && text[0] == 'E') {
         r.failure = text.substr(1);
+    } else if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU) {
+        r.failure = "over the CPU time limit of " +
+                    std::to_string(static_cast<long>(std::ceil(cpuLimitSeconds))) + " s";
     } else if (WIFSIGNALED(status)) {
         r.failure = std::string("killed by signal ") + std::to_string(WTERMSIG(status)) + " (" +
                     strsignal(WTERMSIG(status)) + ")";

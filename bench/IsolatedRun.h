@@ -19,8 +19,10 @@ struct IsolatedRun {
 
 // Calls `run` in a child. `memoryLimitMegabytes` > 0 caps the child's address space
 // (RLIMIT_AS): allocations beyond it throw std::bad_alloc, which fails the run instead of the
-// machine. The parent must not have started worker threads (OpenMP, TBB) before: fork copies
-// only the calling thread.
-IsolatedRun runIsolated(const std::function<std::string()>& run, double memoryLimitMegabytes = 0.0);
+// machine. `cpuLimitSeconds` > 0 caps its CPU time, all threads (RLIMIT_CPU): the kernel ends a
+// longer run (SIGXCPU) and the failure names the limit. The parent must not have started worker
+// threads (OpenMP, TBB) before: fork copies only the calling thread.
+IsolatedRun runIsolated(const std::function<std::string()>& run, double memoryLimitMegabytes = 0.0,
+                        double cpuLimitSeconds = 0.0);
 
 }  // namespace btfracture

@@ -5,7 +5,8 @@
 // steps.csv and table.md into --out (make bench-accuracy then draws the charts with
 // scripts/charts/accuracy_charts.py), and prints METRIC lines.
 //   accuracy_vs_time [--out DIR] [--smoke] [--frames N] [--cases a,b,...] [--methods FULL,EST,...]
-//   [--gain-limit X] [--crack-refinement K] [--verbose]
+//   [--gain-limit X] [--crack-refinement K] [--cpu-limit S] [--verbose]
+// --cpu-limit S: each run's CPU time cap [s] (default 900; 0: none); a run over it is a failed row.
 // --crack-refinement K: the solver cases with crack elements K times finer (SolverCases.h).
 // --smoke: penny, inclined penny and the mode-I growth test, FULL and EST only; exits non-zero when EST's
 // mode-I SIF error exceeds 15 % or FULL's penny K_I is off by more than 3 %.
@@ -53,9 +54,12 @@ void print(const RunResult& r) {
 
 // `run` in a child process (IsolatedRun.h); its result with the child's peak memory, or a result
 // whose note says why the run failed.
+double cpuLimitSeconds = 900.0;  // --cpu-limit
+
 RunResult runInChild(const std::function<RunResult()>& run, const std::string& caseName,
                      const std::string& method) {
-    const btfracture::IsolatedRun child = btfracture::runIsolated([&] { return serialize(run()); });
+    const btfracture::IsolatedRun child =
+        btfracture::runIsolated([&] { return serialize(run()); }, 0.0, cpuLimitSeconds);
     RunResult r;
     if (child.ok) {
         r = deserialize(child.text);
@@ -70,7 +74,8 @@ RunResult runInChild(const std::function<RunResult()>& run, const std::string& c
     return r;
 }
 
-// FULL first (the reference), then EST, then the three HYBRID thresholds when `grows`.
+// FULL first (the reference), then EST, then the three HYBRID thresholds when `grows` and FULL
+// gave its crack triangles.
 std::string methodFilter;  // --methods: run only these (FULL is still the reference when run)
 
 std::vector<RunResult> runMethods(const std::string& name, bool grows, int surface,
@@ -84,7 +89,7 @@ std::vector<RunResult> runMethods(const std::string& name, bool grows, int surfa
     };
     go({"FULL", FractureMethod::Full, 0});
     go({"EST", FractureMethod::Estimated, 0});
-    if (grows && !out.empty()) {
+    if (grows && !out.empty() && out[0].note.rfind("run failed", 0) != 0) {
         const int s = out[0].surfaceTriangles > 0 ? out[0].surfaceTriangles : surface;
         for (int percent : {25, 50, 75}) {
             const int threshold = s + std::max(1, out[0].crackTriangles * percent / 100);
@@ -124,13 +129,16 @@ int main(int argc, char** argv) {
             refinement = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--methods") && i + 1 < argc)
             methodFilter = argv[++i];
+        else if (!std::strcmp(argv[i], "--cpu-limit") && i + 1 < argc && std::atof(argv[i + 1]) >= 0.0)
+            cpuLimitSeconds = std::atof(argv[++i]);
         else if (!std::strcmp(argv[i], "--verbose"))  // per-step fracture log (debug level)
             btfracture::setLogLevel(btfracture::LogLevel::Debug);
         else {
-            std::fprintf(stderr,
-                         "usage: %s [--out DIR] [--smoke] [--frames N] [--cases a,b,...] [--methods "
-                         "FULL,EST,...] [--gain-limit X] [--crack-refinement K] [--verbose]\n",
-                         argv[0]);
+            std::fprintf(
+                stderr,
+                "usage: %s [--out DIR] [--smoke] [--frames N] [--cases a,b,...] [--methods "
+                "FULL,EST,...] [--gain-limit X] [--crack-refinement K] [--cpu-limit S] [--verbose]\n",
+                argv[0]);
             return 2;
         }
     }
