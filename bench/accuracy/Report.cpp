@@ -75,9 +75,16 @@ void writeMarkdownTable(const std::string& path, const std::vector<RunResult>& r
            "SIF err % | "
            "surface mean / Hausdorff % | fragments | Mott KS |\n"
            "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    std::vector<std::string> failures;
     for (const auto& r : runs) {
         const std::string method =
             r.threshold > 0 ? r.method + " (" + std::to_string(r.threshold) + ")" : r.method;
+        if (r.note.rfind("run failed", 0) == 0) {  // no result: the reason goes below the table
+            out << "| " << r.caseName << " | " << method << " | - | - | - | - | - | - | "
+                << fmt("%.0f", r.peakMegabytes) << " | - | - | - | - |\n";
+            failures.push_back(r.caseName + " / " + method + ": " + r.note);
+            continue;
+        }
         const std::string surface = r.surfaceMean < 0.0 ? "-"
                                                         : fmt("%.2f", 100 * r.surfaceMean) + " / " +
                                                               fmt("%.1f", 100 * r.surfaceHausdorff);
@@ -87,8 +94,10 @@ void writeMarkdownTable(const std::string& path, const std::vector<RunResult>& r
             << " | " << (isScene(r) ? fmt("%.2f", r.rigidSeconds) : "-") << " | "
             << fmt("%.0f", r.peakMegabytes) << " | " << orDash(r.sifError, "%.1f", 100.0) << " | " << surface
             << " | " << (r.fragments < 0 ? std::string("-") : std::to_string(r.fragments)) << " | "
-            << orDash(r.mottKs, "%.2f") << " |" << (r.note.empty() ? "" : " ") << "\n";
+            << orDash(r.mottKs, "%.2f") << " |\n";
     }
+    if (!failures.empty()) out << "\n";
+    for (const std::string& f : failures) out << "- " << f << "\n";
 }
 
 }  // namespace accuracy

@@ -200,7 +200,7 @@ int main(int argc, char** argv) {
     for (int triangles : {750, 1000, 1500, 2000}) {
         const std::string name = "bunny_weak_" + std::to_string(triangles);
         const RunResult *f = find(name, "FULL"), *e = find(name, "EST");
-        if (f && e && e->engineSeconds() > 0.0)
+        if (f && e && f->engineSeconds() > 0.0 && e->engineSeconds() > 0.0)
             std::printf("  %d: %.1fx (%.1f / %.1f s, events %d / %d)", triangles,
                         f->engineSeconds() / e->engineSeconds(), f->engineSeconds(), e->engineSeconds(),
                         f->events, e->events);

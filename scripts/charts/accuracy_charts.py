@@ -103,7 +103,7 @@ def main(argv):
     # Peak memory against the largest BEM mesh of the run, per method family.
     fig, ax = plt.subplots(figsize=(6, 4), layout="constrained")
     families = OrderedDict()
-    for run in runs:
+    for run in (r for r in runs if not r["note"].startswith("run failed")):
         family = "HYBRID" if run["method"].startswith("HYB") else run["method"]
         families.setdefault(family, []).append(
             (int(run["bem_triangles"]) + int(run["crack_triangles"]), float(run["peak_rss_mb"])))
