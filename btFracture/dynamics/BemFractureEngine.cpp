@@ -603,9 +603,9 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
         spec.cls = fragmentSpecClass(f.volumeClass);
         // Geometry is in the state frame; the spec is in the parent's body frame.
         spec.collisionMesh = spec.cls == FragmentSpec::Class::ConvexHull ? f.convexHull : f.collisionMesh;
-        if (!holdsVolume(spec.collisionMesh, f.mass.volume)) {
+        if (!holdsVolume(spec.collisionMesh, f.mass.volume, f.mass.centreOfMass)) {
             // A sliver whose mesh lost its volume in decimation: its hull, or nothing (logged).
-            if (!holdsVolume(f.convexHull, f.mass.volume)) {
+            if (!holdsVolume(f.convexHull, f.mass.volume, f.mass.centreOfMass)) {
                 logf(LogLevel::Warning, body.name(), ": fragment ", f.name, " of ", f.mass.volume,
                      " m^3 has no mesh that holds its volume and is dropped");
                 continue;

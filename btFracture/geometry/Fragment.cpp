@@ -5,8 +5,8 @@
 
 namespace btfracture {
 
-bool holdsVolume(const TriangleMesh& mesh, double volume) {
-    return mesh.triangles.size() >= 4 && enclosedVolume(mesh) >= 0.1 * volume;
+bool holdsVolume(const TriangleMesh& mesh, double volume, const Eigen::Vector3d& centreOfMass) {
+    return mesh.triangles.size() >= 4 && enclosedVolume(mesh, centreOfMass) >= 0.1 * volume;
 }
 
 }  // namespace btfracture

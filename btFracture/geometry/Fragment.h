@@ -15,8 +15,9 @@ namespace btfracture {
 class LevelSetBody;
 
 // Whether `mesh` can stand for a body of `volume` [m^3] in collisions: at least 4 triangles,
-// enclosing at least a tenth of the volume (decimation can flatten a sliver's mesh).
-bool holdsVolume(const TriangleMesh& mesh, double volume);
+// enclosing at least a tenth of the volume (decimation can flatten a sliver's mesh), measured
+// about the body's centre of mass (mesh frame) as the world's own check does.
+bool holdsVolume(const TriangleMesh& mesh, double volume, const Eigen::Vector3d& centreOfMass);
 
 struct Fragment {
     std::string name;     // "<parent name>/<index>" for messages

@@ -355,7 +355,7 @@ std::vector<Fragment> LevelSetBody::fragments(const FragmentSettings& settings, 
             f.convexHull = convexHullMesh(surface.vertices, f.name + " (convex hull)");
         } catch (const Error&) {  // a flat sliver
         }
-        if (!holdsVolume(f.convexHull, f.mass.volume)) {
+        if (!holdsVolume(f.convexHull, f.mass.volume, f.mass.centreOfMass)) {
             logf(LogLevel::Debug, f.name, ": fragment of ", f.mass.volume,
                  " m^3: its surface's hull does not hold its volume; the hull of its voxels instead");
             f.convexHull = voxelHull(*phi, f.name + " (convex hull)");

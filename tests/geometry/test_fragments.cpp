@@ -7,6 +7,7 @@
 #include <btFracture/core/Log.h>
 #include <btFracture/core/MassProperties.h>
 #include <btFracture/core/MeshCheck.h>
+#include <btFracture/core/Primitives.h>
 #include <btFracture/geometry/LevelSetBody.h>
 
 #include <gtest/gtest.h>
@@ -159,7 +160,7 @@ TEST(Fragments, ChipsAFewVoxelsAcrossKeepTheirVolumeAndGetAHull) {
         double sum = 0.0;
         for (const Fragment& f : pieces) {
             sum += f.mass.volume;
-            EXPECT_TRUE(holdsVolume(f.convexHull, f.mass.volume))
+            EXPECT_TRUE(holdsVolume(f.convexHull, f.mass.volume, f.mass.centreOfMass))
                 << voxels << " voxels: " << f.name << " of " << f.mass.volume << " m^3, hull of "
                 << enclosedVolume(f.convexHull) << " m^3";
             // A body whose centre of mass lies outside its collision shape turns about a point
@@ -304,6 +305,28 @@ TEST(Fragments, CracksMeetingInsideLeaveClosedSurfaces) {
 }
 
 // Three corner cuts and a plane give pieces in every class of §5.2.
+// An open mesh's enclosed volume depends on the point it is taken about: holdsVolume takes it
+// about the centre of mass. A box without its top face, 100 m up: about its centre it encloses
+// 5/6 of the box (the missing face held (1/3) b A_top = V/6), about the origin far less than nothing.
+TEST(Fragments, HoldsVolumeIsMeasuredAboutTheCentreOfMass) {
+    const Eigen::Vector3d half(0.05, 0.03, 0.025), up(0.0, 100.0, 0.0);
+    TriangleMesh open = btfracture::makeBox(half);
+    for (auto& v : open.vertices) v += up;
+    const double volume = 8.0 * half.prod();
+    EXPECT_TRUE(holdsVolume(open, volume, up));
+    const auto onTop = [&](const auto& t) {
+        return std::all_of(t.begin(), t.end(),
+                           [&](int i) { return open.vertices[i].y() > up.y() + 0.5 * half.y(); });
+    };
+    open.triangles.erase(std::remove_if(open.triangles.begin(), open.triangles.end(), onTop),
+                         open.triangles.end());
+    ASSERT_EQ(open.triangles.size(), 10u);
+    EXPECT_NEAR(enclosedVolume(open, up), 5.0 / 6.0 * volume, 1e-9 * volume);
+    EXPECT_LT(enclosedVolume(open), 0.0);
+    EXPECT_TRUE(holdsVolume(open, volume, up));
+    EXPECT_FALSE(holdsVolume(open, 10.0 * volume, up));  // 1/12 of that volume
+}
+
 TEST(Fragments, VolumeClassesOnConstructedCase) {
     const double side = 0.1;
     LevelSetBody cube(test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(side), "cube"), side / 64);
