@@ -39,8 +39,8 @@ bench: build
 CHART_PYTHON ?= $(firstword $(foreach p,/usr/bin/python3 python3,$(shell $(p) -c 'import matplotlib' 2>/dev/null && echo $(p))))
 
 # The accuracy-vs-time study: FULL / EST / HYBRID on every case, about 35 minutes on
-# 2 cores (each run capped at 900 s of CPU); runs.csv, steps.csv, table.md and the charts (scripts/charts/accuracy_charts.py)
-# into ACCURACY_OUT.
+# 2 cores (each run capped at 900 s of CPU); runs.csv, steps.csv, table.md and the charts
+# (scripts/charts/accuracy_charts.py) into ACCURACY_OUT.
 ACCURACY_OUT ?= $(OUT)/accuracy
 bench-accuracy: build
 	@mkdir -p $(ACCURACY_OUT)

@@ -79,7 +79,7 @@ void writeMarkdownTable(const std::string& path, const std::vector<RunResult>& r
     for (const auto& r : runs) {
         const std::string method =
             r.threshold > 0 ? r.method + " (" + std::to_string(r.threshold) + ")" : r.method;
-        if (r.note.rfind("run failed", 0) == 0) {  // no result: the reason goes below the table
+        if (r.failed()) {  // no result: the reason goes below the table
             out << "| " << r.caseName << " | " << method << " | - | - | - | - | - | - | "
                 << fmt("%.0f", r.peakMegabytes) << " | - | - | - | - |\n";
             failures.push_back(r.caseName + " / " + method + ": " + r.note);

@@ -44,7 +44,9 @@ struct RunResult {
     // Filled by the driver after all runs of the case: distance of `surface` to the reference
     // run's, relative to the body size (-1: none).
     double surfaceHausdorff = -1.0, surfaceMean = -1.0;
-    std::string note;
+    std::string note;  // "run failed (<why>)" when the run gave no result (failed())
+
+    bool failed() const { return note.rfind("run failed", 0) == 0; }
 
     // Everything the fracture engine spent (BEM, cracks, geometry): the paper's t_f [s].
     double engineSeconds() const {

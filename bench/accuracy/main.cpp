@@ -52,10 +52,10 @@ void print(const RunResult& r) {
     std::fflush(stdout);
 }
 
-// `run` in a child process (IsolatedRun.h); its result with the child's peak memory, or a result
-// whose note says why the run failed.
 double cpuLimitSeconds = 900.0;  // --cpu-limit
 
+// `run` in a child process (IsolatedRun.h); its result with the child's peak memory, or a result
+// whose note says why the run failed.
 RunResult runInChild(const std::function<RunResult()>& run, const std::string& caseName,
                      const std::string& method) {
     const btfracture::IsolatedRun child =
@@ -89,7 +89,7 @@ std::vector<RunResult> runMethods(const std::string& name, bool grows, int surfa
     };
     go({"FULL", FractureMethod::Full, 0});
     go({"EST", FractureMethod::Estimated, 0});
-    if (grows && !out.empty() && out[0].note.rfind("run failed", 0) != 0) {
+    if (grows && !out.empty() && !out[0].failed()) {
         const int s = out[0].surfaceTriangles > 0 ? out[0].surfaceTriangles : surface;
         for (int percent : {25, 50, 75}) {
             const int threshold = s + std::max(1, out[0].crackTriangles * percent / 100);

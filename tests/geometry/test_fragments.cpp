@@ -162,7 +162,7 @@ TEST(Fragments, ChipsAFewVoxelsAcrossKeepTheirVolumeAndGetAHull) {
             sum += f.mass.volume;
             EXPECT_TRUE(holdsVolume(f.convexHull, f.mass.volume, f.mass.centreOfMass))
                 << voxels << " voxels: " << f.name << " of " << f.mass.volume << " m^3, hull of "
-                << enclosedVolume(f.convexHull) << " m^3";
+                << enclosedVolume(f.convexHull, f.mass.centreOfMass) << " m^3";
             // A body whose centre of mass lies outside its collision shape turns about a point
             // off its surface (a one-voxel chip's centre was 3.5 voxels from its hull and it sank).
             EXPECT_GT(windingNumber(f.convexHull.vertices, f.convexHull.triangles, f.mass.centreOfMass), 0.5)
@@ -304,7 +304,6 @@ TEST(Fragments, CracksMeetingInsideLeaveClosedSurfaces) {
     EXPECT_NEAR(sum / box.massProperties().volume, 1.0, 0.005);
 }
 
-// Three corner cuts and a plane give pieces in every class of §5.2.
 // An open mesh's enclosed volume depends on the point it is taken about: holdsVolume takes it
 // about the centre of mass. A box without its top face, 100 m up: about its centre it encloses
 // 5/6 of the box (the missing face held (1/3) b A_top = V/6), about the origin far less than nothing.
@@ -327,6 +326,7 @@ TEST(Fragments, HoldsVolumeIsMeasuredAboutTheCentreOfMass) {
     EXPECT_FALSE(holdsVolume(open, 10.0 * volume, up));  // 1/12 of that volume
 }
 
+// Three corner cuts and a plane give pieces in every class of §5.2.
 TEST(Fragments, VolumeClassesOnConstructedCase) {
     const double side = 0.1;
     LevelSetBody cube(test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(side), "cube"), side / 64);
