@@ -251,9 +251,23 @@ CrackSurfaceCoupling assembleCrackSurfaceCoupling(const ElasticSolver& solver, c
 CrackSystem::CrackSystem(const ElasticSolver& solver, CrackMesh& cracks, Blocks blocks)
     : solver_(solver), cracks_(cracks), blocks_(blocks) {
     const int n3 = 3 * solver.mesh().nodeCount(), m3 = 3 * solver.mesh().triangleCount();
-    C_.resize(n3, 0);
+    W_.resize(n3, 0);
+    if (blocks_ == Blocks::Keep) C_.resize(n3, 0);
     Gt_.resize(m3, 0);
     D_.resize(0, 0);
+}
+
+const Eigen::MatrixXd& CrackSystem::surfaceCrackBlock() const {
+    if (blocks_ != Blocks::Keep)
+        throw Error("CrackSystem: C is kept as L^-1 P C only (construct with Blocks::Keep)");
+    return C_;
+}
+
+Eigen::VectorXd CrackSystem::surfaceLoadOf(const Eigen::VectorXd& openings) const {
+    if (openings.size() != W_.cols())
+        throw Error("CrackSystem::surfaceLoadOf: expected " + std::to_string(W_.cols()) +
+                    " opening values, got " + std::to_string(openings.size()));
+    return solver_.factorTimes(W_ * openings);
 }
 
 const Eigen::MatrixXd& CrackSystem::crackCrackBlock() const {
@@ -331,11 +345,12 @@ int CrackSystem::update() {
              " crack unknowns (the first at slot ", first, ")");
 
     // The changed unknowns' old columns, restored if the grown system turns out singular.
-    Eigen::MatrixXd savedC(C_.rows(), 3 * changed), savedD;
+    Eigen::MatrixXd savedW(W_.rows(), 3 * changed), savedC, savedD;
     Eigen::MatrixXf savedG(Gt_.rows(), 3 * changed);
-    if (blocks_ == Blocks::Keep) savedD.resize(D_.rows(), 3 * changed);
+    if (blocks_ == Blocks::Keep) savedC.resize(C_.rows(), 3 * changed), savedD.resize(D_.rows(), 3 * changed);
     for (int i = 0; i < changed; ++i) {
-        savedC.middleCols(3 * i, 3) = C_.middleCols(3 * redo[i], 3);
+        savedW.middleCols(3 * i, 3) = W_.middleCols(3 * redo[i], 3);
+        if (blocks_ == Blocks::Keep) savedC.middleCols(3 * i, 3) = C_.middleCols(3 * redo[i], 3);
         savedG.middleCols(3 * i, 3) = Gt_.middleCols(3 * redo[i], 3);
         if (blocks_ == Blocks::Keep) savedD.middleCols(3 * i, 3) = D_.middleCols(3 * redo[i], 3);
     }
@@ -410,23 +425,31 @@ int CrackSystem::update() {
 
         const double integrals = phase.seconds();
         // The blocks in unknown order, the redone unknowns' columns (and rows of G, D) replaced.
-        C_.conservativeResize(Eigen::NoChange, new3);
+        // C enters only as L^-1 P C (K_R = L L^T).
+        phase.restart();
+        Eigen::MatrixXd whitened = solver_.factorSolve(coupling.C);
+        if (blocks_ == Blocks::Keep)
+            C_.conservativeResize(Eigen::NoChange, new3);
+        else
+            coupling.C = Eigen::MatrixXd();
+        W_.conservativeResize(Eigen::NoChange, new3);
         Gt_.conservativeResize(Eigen::NoChange, new3);
         if (blocks_ == Blocks::Keep) D_.conservativeResize(new3, new3);
         for (int i = 0; i < static_cast<int>(redo.size()); ++i) {
             const int at = 3 * redo[i];
-            C_.middleCols(at, 3) = coupling.C.middleCols(3 * i, 3);
+            W_.middleCols(at, 3) = whitened.middleCols(3 * i, 3);
             Gt_.middleCols(at, 3) = coupling.G.middleRows(3 * i, 3).transpose().cast<float>();
             if (blocks_ == Blocks::Keep) {
+                C_.middleCols(at, 3) = coupling.C.middleCols(3 * i, 3);
                 D_.middleCols(at, 3) = columns.middleCols(3 * i, 3);
                 D_.middleRows(at, 3) = columns.middleCols(3 * i, 3).transpose();
             }
         }
         coupling.G = Eigen::MatrixXd();  // in Gt_ now: freed before the factor grows
 
-        // Schur complement columns S(:, redo) = D(:, redo) - C^T K_R^-1 K^T C_redo (unknown order).
-        phase.restart();
-        columns -= transposedProduct(C_, regularisedLoadSolve(coupling.C));
+        // Schur complement columns S(:, redo) = D(:, redo) - W^T W_redo, W = L^-1 P C (unknown order).
+        columns -= transposedProduct(W_, whitened);
+        whitened.resize(0, 0);
         coupling.C = Eigen::MatrixXd();
         const double schurColumns = phase.seconds();
         phase.restart();
@@ -529,7 +552,8 @@ int CrackSystem::update() {
         assembledUnknowns_ = total;
     } catch (const Error&) {
         if (factorTaken) {  // the old factor is gone: empty, for the next update() to assemble anew
-            C_.resize(C_.rows(), 0);
+            W_.resize(W_.rows(), 0);
+            if (blocks_ == Blocks::Keep) C_.resize(C_.rows(), 0);
             Gt_.resize(Gt_.rows(), 0);
             D_.resize(0, 0);
             denseSchur_.resize(0, 0);
@@ -541,14 +565,16 @@ int CrackSystem::update() {
             throw;
         }
         for (int i = 0; i < changed; ++i) {
-            C_.middleCols(3 * redo[i], 3) = savedC.middleCols(3 * i, 3);
+            W_.middleCols(3 * redo[i], 3) = savedW.middleCols(3 * i, 3);
             Gt_.middleCols(3 * redo[i], 3) = savedG.middleCols(3 * i, 3);
             if (blocks_ == Blocks::Keep) {
+                C_.middleCols(3 * redo[i], 3) = savedC.middleCols(3 * i, 3);
                 D_.middleCols(3 * redo[i], 3) = savedD.middleCols(3 * i, 3);
                 D_.middleRows(3 * redo[i], 3) = savedD.middleCols(3 * i, 3).transpose();
             }
         }
-        C_.conservativeResize(Eigen::NoChange, 3 * assembledUnknowns_);
+        W_.conservativeResize(Eigen::NoChange, 3 * assembledUnknowns_);
+        if (blocks_ == Blocks::Keep) C_.conservativeResize(Eigen::NoChange, 3 * assembledUnknowns_);
         Gt_.conservativeResize(Eigen::NoChange, 3 * assembledUnknowns_);
         if (blocks_ == Blocks::Keep) D_.conservativeResize(3 * assembledUnknowns_, 3 * assembledUnknowns_);
         throw;
@@ -570,7 +596,8 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q, const Eigen::
         s.openings.resize(0);
         return s;
     }
-    const Eigen::VectorXd rhs = loadOnCracks(q) - transposedTimes(C_, b);
+    // (P C)^T b = W^T L^T b.
+    const Eigen::VectorXd rhs = loadOnCracks(q) - transposedTimes(W_, solver_.factorTransposeTimes(b));
     Eigen::VectorXd x(rhs.size());  // in the factor's order
     for (int k = 0; k < assembledUnknowns_; ++k) x.segment<3>(3 * k) = rhs.segment<3>(3 * slots_[k]);
     if (denseSchur_.size() > 0) {
@@ -592,7 +619,8 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q, const Eigen::
         throw Error(
             "crack system: the Schur complement solve gave NaN or Inf; the crack mesh is probably "
             "degenerate");
-    s.displacements = b - regularisedLoadSolve(C_ * s.openings);
+    s.displacements = b - solver_.factorTransposeSolve(W_ * s.openings);
+    solver_.fixGauge(s.displacements);
     return s;
 }
 
@@ -600,21 +628,20 @@ CrackSystem::Solution CrackSystem::solveMonolithic(const Eigen::VectorXd& q) con
     const Eigen::MatrixXd& D = crackCrackBlock();
     const Eigen::MatrixXd& K = solver_.stiffness();
     const int n3 = static_cast<int>(K.rows()), k3 = 3 * assembledUnknowns_;
-    const Eigen::MatrixXd& T = solver_.regulariser();
+    const Eigen::MatrixXd& Q = solver_.rigidBasis();
+    const Eigen::MatrixXd PC = solver_.withoutRigidMotions(surfaceCrackBlock());
     Eigen::MatrixXd A(n3 + k3, n3 + k3);
-    A.topLeftCorner(n3, n3) = K.transpose() * K + solver_.regularisationWeight() * T.transpose() * T;
-    A.topRightCorner(n3, k3) = K.transpose() * C_;
-    A.bottomLeftCorner(k3, n3) = C_.transpose();
+    A.topLeftCorner(n3, n3) = K + solver_.regularisationWeight() * Q * Q.transpose();
+    A.topRightCorner(n3, k3) = PC;
+    A.bottomLeftCorner(k3, n3) = PC.transpose();
     A.bottomRightCorner(k3, k3) = D;
     Eigen::VectorXd rhs(n3 + k3);
-    rhs.head(n3) = K.transpose() * (solver_.load(q));
+    rhs.head(n3) = solver_.withoutRigidMotions(solver_.load(q));
     rhs.tail(k3) = loadOnCracks(q);
     const Eigen::VectorXd x = A.partialPivLu().solve(rhs);
-    return {x.head(n3), x.tail(k3)};
-}
-
-Eigen::MatrixXd CrackSystem::regularisedLoadSolve(const Eigen::MatrixXd& b) const {
-    return solver_.solveRegularised(transposedProduct(solver_.stiffness(), b));
+    Eigen::VectorXd u = x.head(n3);
+    solver_.fixGauge(u);
+    return {u, x.tail(k3)};
 }
 
 Eigen::VectorXd CrackSystem::loadOnCracks(const Eigen::VectorXd& q) const {
@@ -622,8 +649,8 @@ Eigen::VectorXd CrackSystem::loadOnCracks(const Eigen::VectorXd& q) const {
 }
 
 std::size_t CrackSystem::matrixBytes() const {
-    return sizeof(double) * (C_.size() + D_.size() + denseSchur_.size()) + sizeof(float) * Gt_.size() +
-           schur_.bytes() + lu_.bytes();
+    return sizeof(double) * (W_.size() + C_.size() + D_.size() + denseSchur_.size()) +
+           sizeof(float) * Gt_.size() + schur_.bytes() + lu_.bytes();
 }
 
 Eigen::VectorXd CrackSystem::nodalOpenings(const Solution& s) const {

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: Zlib
 #pragma once
 // A body's elastostatic system with cracks (paper Eq. 4): surface displacements u and crack
-// opening displacements (COD), solved by the Schur complement on the prefactored K_R, which is
-// never rebuilt when cracks change:
-//   [ K_R    K^T C ] [ u   ]   [ K^T F q ]
-//   [ C^T    D     ] [ cod ] = [ G q     ]
+// opening displacements (COD), solved by the Schur complement on the prefactored K_R = L L^T,
+// which is never rebuilt when cracks change:
+//   [ K_R    P C ] [ u   ]   [ P F q ]
+//   [ C^T P  D   ] [ cod ] = [ G q   ]
 // C couples surface and crack hats, D crack hats with each other (appendix Eq. 8), G q is the
 // traction that the surface loads q induce on the crack faces through the adjoint double layer
-// (zero only for cracks far from any loaded surface). S = D - C^T K_R^-1 K^T C is symmetric
-// positive definite up to rounding (and up to the rigid modes' residue in K, 1e-6 of S near
-// crack mouths) and is factored by Cholesky as symmetric, from its columns S(:, new) = D(:, new) -
-// C^T K_R^-1 K^T C_new. When a crack grows, only the new unknowns' columns are computed and the
+// (zero only for cracks far from any loaded surface); P projects off the rigid motions
+// (ElasticSolver). C is kept as W = L^-1 P C, so S = D - W^T W is symmetric by construction and
+// positive definite up to rounding; it is factored by Cholesky from its columns S(:, new) =
+// D(:, new) - W^T W_new. When a crack grows, only the new unknowns' columns are computed and the
 // factor is extended by bordering (BorderedCholesky): D is folded into it and freed. Unknowns
 // whose basis function a changed mouth cut alters are assembled again: they leave the factor by
 // rank-one updates and join it again last. A system
@@ -62,8 +62,11 @@ public:
     // COD at every crack node (zero on the front), 3 x nodeCount.
     Eigen::VectorXd nodalOpenings(const Solution& s) const;
 
-    const Eigen::MatrixXd& surfaceCrackBlock() const { return C_; }  // 3n x 3k
-    const Eigen::MatrixXd& crackCrackBlock() const;                  // 3k x 3k, Blocks::Keep only
+    // C (3n x 3k), Blocks::Keep only.
+    const Eigen::MatrixXd& surfaceCrackBlock() const;
+    // P C w (3n): the surface load of openings w (3k), P the projection off the rigid motions.
+    Eigen::VectorXd surfaceLoadOf(const Eigen::VectorXd& openings) const;
+    const Eigen::MatrixXd& crackCrackBlock() const;  // 3k x 3k, Blocks::Keep only
     // Bytes held by the crack blocks and the factor (the ElasticSolver's not included).
     std::size_t matrixBytes() const;
 
@@ -71,13 +74,13 @@ private:
     const ElasticSolver& solver_;
     CrackMesh& cracks_;
     const Blocks blocks_;
-    Eigen::MatrixXd C_, D_;
+    Eigen::MatrixXd W_;      // L^-1 P C (3n x 3k), K_R = L L^T (ElasticSolver)
+    Eigen::MatrixXd C_, D_;  // Blocks::Keep only
     // G^T (3m x 3k: grows by columns, in place), single precision (half the bytes of the largest
     // block): G only forms the right-hand side G q, in double, so the rounding stays near 1e-7 of it.
     Eigen::MatrixXf Gt_;
     Eigen::VectorXd loadOnCracks(const Eigen::VectorXd& tractions) const;  // G q
-    Eigen::MatrixXd regularisedLoadSolve(const Eigen::MatrixXd& b) const;  // K_R^-1 K^T b
-    BorderedCholesky schur_;      // S = D - C^T K_R^-1 K^T C; on LU, of S's leading positive definite slots
+    BorderedCholesky schur_;      // S = D - W^T W; on LU, of S's leading positive definite slots
     Eigen::MatrixXd denseSchur_;  // S in full, once Cholesky failed
     BorderedLU lu_;               // its LU, grown with it
     int indefiniteRows_ = 0;      // on LU: S's leading rows (factor order) known not positive definite

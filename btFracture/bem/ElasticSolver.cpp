@@ -8,6 +8,8 @@
 #include <btFracture/core/Timer.h>
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <Eigen/QR>
 
 #include <algorithm>
 #include <sstream>
@@ -15,28 +17,6 @@
 #include <vector>
 
 namespace btfracture {
-namespace {
-
-// Lower triangle of K^T K (the upper one is left untouched): independent block products
-// spread over the threads, N^3 flops instead of a full GEMM's 2 N^3. Deterministic: each block
-// is one GEMM on one thread.
-void lowerGram(const Eigen::MatrixXd& K, Eigen::MatrixXd& out) {
-    const int n = static_cast<int>(K.cols());
-    constexpr int kBlock = 192;
-    const int blocks = (n + kBlock - 1) / kBlock;
-    std::vector<std::pair<int, int>> tasks;
-    for (int j = 0; j < blocks; ++j)
-        for (int i = j; i < blocks; ++i) tasks.emplace_back(i, j);
-    out.resize(n, n);
-#pragma omp parallel for schedule(dynamic, 1)
-    for (int t = 0; t < static_cast<int>(tasks.size()); ++t) {
-        const int i0 = tasks[t].first * kBlock, j0 = tasks[t].second * kBlock;
-        const int h = std::min(kBlock, n - i0), w = std::min(kBlock, n - j0);
-        out.block(i0, j0, h, w).noalias() = K.middleCols(i0, h).transpose() * K.middleCols(j0, w);
-    }
-}
-
-}  // namespace
 
 ElasticSolver::ElasticSolver(SurfaceMesh mesh, const Material& material,
                              const ElasticSolverSettings& settings)
@@ -52,22 +32,27 @@ void ElasticSolver::assembleAndFactor() {
         stiffness_ = std::move(ops.stiffness);
         tractionToLoad_ = ops.tractionToLoad.cast<float>();
     }
-    // Rows of T scaled to unit length: the regulariser then has the size of K^T K at any body
-    // size (unscaled, translation rows grow as L^2 and rotation rows as L^3 while K grows as L,
-    // so a millimetre body's K_R was singular to machine precision: rcond 2e-16). The null space,
-    // and so the solution, is the same (Eq. 2 only asks T u = 0).
+    // Rows of T scaled to unit length, so that the gauge fix below is well scaled at any body size
+    // (unscaled, translation rows grow as L^2 and rotation rows as L^3).
     rigidModes_ = rigidModeOperator(mesh_);
     for (Eigen::Index r = 0; r < rigidModes_.rows(); ++r) rigidModes_.row(r).normalize();
     netLoadOperator_ = netLoadOperator(mesh_);
+    rigidMotions_ = rigidMotions(mesh_);
+    rigidBasis_ = Eigen::MatrixXd::Identity(rigidMotions_.rows(), 6);
+    Eigen::HouseholderQR<Eigen::MatrixXd>(rigidMotions_).householderQ().applyThisOnTheLeft(rigidBasis_);
+    gaugeFix_ = (rigidModes_ * rigidMotions_).partialPivLu().solve(rigidModes_);
     timings_.assembly = timer.seconds();
 
-    // Eq. 3: K_R = K^T K + gamma T^T T, gamma = (tr(K) / 3n)^2. K is symmetric, so K^T K = K K.
+    // K_R = K + gamma Q Q^T, gamma = tr(K) / 3n, Q an orthonormal basis of the rigid motions
+    // (K's null space): symmetric positive definite, so its Cholesky factor L serves the crack
+    // Schur complement in the symmetric form D - (L^-1 P C)^T (L^-1 P C). The paper's Eq. 3
+    // (K^T K + gamma T^T T) has the same solutions for loads free of rigid-motion work, at N^3
+    // more flops and the square of K's condition number (FORMULATION.md).
     timer.restart();
     const Eigen::MatrixXd& K = stiffness_;
-    const double n3 = static_cast<double>(K.rows());
-    gamma_ = (K.trace() / n3) * (K.trace() / n3);
-    lowerGram(K, factor_);
-    factor_.triangularView<Eigen::Lower>() += gamma_ * rigidModes_.transpose() * rigidModes_;
+    gamma_ = K.trace() / static_cast<double>(K.rows());
+    factor_ = K;
+    factor_.selfadjointView<Eigen::Lower>().rankUpdate(rigidBasis_, gamma_);
     timings_.regularisation = timer.seconds();
 
     timer.restart();
@@ -149,15 +134,42 @@ TractionResultant ElasticSolver::netLoad(const Eigen::VectorXd& q) const {
     return net;
 }
 
-Eigen::MatrixXd ElasticSolver::solveRegularised(const Eigen::MatrixXd& rhs) const {
-    requireResident("solveRegularised");
-    Eigen::MatrixXd x = rhs;
-    forEachColumnBlock(x.cols(), 16, [&](int j0, int w) {
+Eigen::MatrixXd ElasticSolver::withoutRigidMotions(const Eigen::MatrixXd& b) const {
+    return b - rigidBasis_ * (rigidBasis_.transpose() * b);
+}
+
+Eigen::MatrixXd ElasticSolver::factorSolve(const Eigen::MatrixXd& rhs) const {
+    requireResident("factorSolve");
+    Eigen::MatrixXd x = withoutRigidMotions(rhs);
+    forEachColumnBlock(x.cols(), 64, [&](int j0, int w) {
         auto xs = x.middleCols(j0, w);
         factor_.triangularView<Eigen::Lower>().solveInPlace(xs);
+    });
+    return x;
+}
+
+Eigen::MatrixXd ElasticSolver::factorTransposeSolve(const Eigen::MatrixXd& rhs) const {
+    requireResident("factorTransposeSolve");
+    Eigen::MatrixXd x = rhs;
+    forEachColumnBlock(x.cols(), 64, [&](int j0, int w) {
+        auto xs = x.middleCols(j0, w);
         factor_.triangularView<Eigen::Lower>().transpose().solveInPlace(xs);
     });
     return x;
+}
+
+Eigen::VectorXd ElasticSolver::factorTimes(const Eigen::VectorXd& x) const {
+    requireResident("factorTimes");
+    return factor_.triangularView<Eigen::Lower>() * x;
+}
+
+Eigen::VectorXd ElasticSolver::factorTransposeTimes(const Eigen::VectorXd& x) const {
+    requireResident("factorTransposeTimes");
+    return factor_.triangularView<Eigen::Lower>().transpose() * x;
+}
+
+void ElasticSolver::fixGauge(Eigen::VectorXd& u) const {
+    u -= rigidMotions_ * (gaugeFix_ * u);
 }
 
 Eigen::VectorXd ElasticSolver::displacements(const Eigen::VectorXd& q) const {
@@ -166,11 +178,11 @@ Eigen::VectorXd ElasticSolver::displacements(const Eigen::VectorXd& q) const {
 
 Eigen::VectorXd ElasticSolver::displacementsFromLoad(const Eigen::VectorXd& f) const {
     requireResident("displacementsFromLoad");
-    const Eigen::VectorXd rhs = transposedTimes(stiffness_, f);
-    Eigen::VectorXd u = solveRegularised(rhs);
-    // Residual of K_R u = K^T f, formed without K_R.
-    const Eigen::VectorXd residual = transposedTimes(stiffness_, stiffness_ * u) +
-                                     gamma_ * rigidModes_.transpose() * (rigidModes_ * u) - rhs;
+    const Eigen::VectorXd rhs = withoutRigidMotions(f);
+    Eigen::VectorXd u = factorTransposeSolve(factorSolve(rhs));
+    // Residual of K_R u = P f, formed from K (the factor overwrote K_R's upper triangle).
+    const Eigen::VectorXd residual =
+        stiffness_ * u + gamma_ * rigidBasis_ * (rigidBasis_.transpose() * u) - rhs;
     const double relative = residual.norm() / std::max(rhs.norm(), std::numeric_limits<double>::min());
     if (!u.allFinite() || relative > 1e-6) {
         std::ostringstream msg;
@@ -178,6 +190,7 @@ Eigen::VectorXd ElasticSolver::displacementsFromLoad(const Eigen::VectorXd& f) c
             << ")";
         throw Error(msg.str());
     }
+    fixGauge(u);
     return u;
 }
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Zlib
 #pragma once
 // Pure-Neumann elastostatics on one body (paper §3): assemble K and F, regularise with the
-// rigid-mode operator T (Eq. 1-3), factor K_R = K^T K + gamma T^T T once, then
-// u = K_R^-1 K^T F q for any number of traction fields q.
+// rigid motions (Eq. 1-3), factor K_R = K + gamma Q Q^T once (Q: orthonormal rigid motions),
+// then u = K_R^-1 P F q for any number of traction fields q (P: the projection off the rigid
+// motions), shifted by a rigid motion so that T u = 0 (Eq. 1-2).
 #include <btFracture/bem/BoundaryOperators.h>
 #include <btFracture/bem/SurfaceMesh.h>
 #include <btFracture/core/Material.h>
@@ -26,7 +27,7 @@ struct TractionResultant {
 
 struct ElasticSolverTimings {
     double assembly = 0.0;        // K and F [s]
-    double regularisation = 0.0;  // K^T K + gamma T^T T [s]
+    double regularisation = 0.0;  // K + gamma Q Q^T [s]
     double factorisation = 0.0;   // dense Cholesky [s]
 };
 
@@ -44,12 +45,20 @@ public:
     // body frame). Throws if q carries net force or torque (see TractionResultant).
     Eigen::VectorXd displacements(const Eigen::VectorXd& tractions) const;
 
-    // u = K_R^-1 K^T f for a load vector f (3n) that is already free of rigid-mode work (F q of
-    // balanced tractions, possibly corrected by crack terms, §4.3). Checks the residual.
+    // u = K_R^-1 P f, T u = 0, for a load vector f (3n) that does no work on rigid motions (F q
+    // of balanced tractions, possibly corrected by crack terms, §4.3). Checks the residual.
     Eigen::VectorXd displacementsFromLoad(const Eigen::VectorXd& load) const;
 
-    // K_R^-1 B for any right-hand sides B (3n x k); used by the crack Schur complement.
-    Eigen::MatrixXd solveRegularised(const Eigen::MatrixXd& rhs) const;
+    // With K_R = L L^T: L^-1 P B, L^-T B, L x and L^T x (3n rows); the crack Schur complement is
+    // D - (L^-1 P C)^T (L^-1 P C).
+    Eigen::MatrixXd factorSolve(const Eigen::MatrixXd& rhs) const;
+    Eigen::MatrixXd factorTransposeSolve(const Eigen::MatrixXd& rhs) const;
+    Eigen::VectorXd factorTimes(const Eigen::VectorXd& x) const;
+    Eigen::VectorXd factorTransposeTimes(const Eigen::VectorXd& x) const;
+    // P B: B without its components along the rigid motions (Euclidean).
+    Eigen::MatrixXd withoutRigidMotions(const Eigen::MatrixXd& b) const;
+    // Adds the rigid motion that makes T u = 0 (Eq. 1-2); stresses do not change.
+    void fixGauge(Eigen::VectorXd& u) const;
 
     TractionResultant netLoad(const Eigen::VectorXd& tractions) const;
 
@@ -66,6 +75,7 @@ public:
     // torque, as displacements() does.
     Eigen::VectorXd load(const Eigen::VectorXd& tractions) const;
     const Eigen::MatrixXd& regulariser() const { return rigidModes_; }  // T (6 x 3n), Eq. 1-2, unit rows
+    const Eigen::MatrixXd& rigidBasis() const { return rigidBasis_; }   // Q (3n x 6), orthonormal
     double regularisationWeight() const { return gamma_; }
     double reciprocalCondition() const { return rcond_; }
     const ElasticSolverTimings& timings() const { return timings_; }
@@ -89,8 +99,11 @@ private:
     Eigen::MatrixXd stiffness_;  // K (BoundaryOperators::stiffness)
     Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> tractionToLoad_;  // F
     Eigen::MatrixXd rigidModes_;                                                            // T (6 x 3n)
-    Eigen::MatrixXd netLoadOperator_;                                                       // A (6 x 3m)
-    Eigen::MatrixXd factor_;  // lower Cholesky factor of K_R
+    Eigen::MatrixXd rigidMotions_;                                                          // R (3n x 6)
+    Eigen::MatrixXd rigidBasis_;       // Q (3n x 6), orthonormal, span R
+    Eigen::MatrixXd gaugeFix_;         // (T R)^-1 T (6 x 3n)
+    Eigen::MatrixXd netLoadOperator_;  // A (6 x 3m)
+    Eigen::MatrixXd factor_;           // lower Cholesky factor of K_R
     double gamma_ = 0.0;
     double rcond_ = 0.0;
     ElasticSolverTimings timings_;

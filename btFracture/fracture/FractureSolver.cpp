@@ -397,7 +397,7 @@ void FractureSolver::switchToEstimator() {
         Eigen::VectorXd cod(3 * cracks_.unknownCount());
         for (int k = 0; k < cracks_.unknownCount(); ++k)
             cod.segment<3>(3 * k) = leavingOpenings_.segment<3>(3 * cracks_.nodeOfUnknown()[k]);
-        crackLoad_ = full_->surfaceCrackBlock() * cod;
+        crackLoad_ = full_->surfaceLoadOf(cod);
         displacements_ = solver_.displacementsFromLoad(load_ - crackLoad_);
         estimatedOpenings_ = solvedOpenings_;
     }

@@ -250,7 +250,7 @@ TEST(SurfaceCrack, CrossingMouthsLeaveRigidMotionsFree) {
                         Eigen::Vector3d::UnitY(), 0.03, 0.03, 3);
     addRectangularSheet(cracks, top + Eigen::Vector3d(0.0, 0.0093, 0.0), -Eigen::Vector3d::UnitZ(),
                         Eigen::Vector3d::UnitX(), 0.03, 0.03, 3);
-    CrackSystem system(solver, cracks);
+    CrackSystem system(solver, cracks, CrackSystem::Blocks::Keep);
     system.update();
     const Eigen::MatrixXd& C = system.surfaceCrackBlock();
     const int n = solver.mesh().nodeCount();
