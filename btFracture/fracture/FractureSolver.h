@@ -104,7 +104,7 @@ public:
     // Front nodes that stopped for good (reached the surface head-on or met another crack).
     bool isArrested(int node) const { return node < static_cast<int>(arrested_.size()) && arrested_[node]; }
 
-    // FULL's crack system (S, its factor, K^T C): bytes held, and freeing it between events; the
+    // FULL's crack system (S, its factor, L^-1 P C): bytes held, and freeing it between events; the
     // next event builds it again from the cracks (the same equations).
     std::size_t crackSystemBytes() const;
     void releaseCrackSystem() { full_.reset(); }
