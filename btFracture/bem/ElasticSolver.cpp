@@ -138,23 +138,27 @@ Eigen::MatrixXd ElasticSolver::withoutRigidMotions(const Eigen::MatrixXd& b) con
     return b - rigidBasis_ * (rigidBasis_.transpose() * b);
 }
 
+void ElasticSolver::solveWithFactorInPlace(Eigen::Ref<Eigen::MatrixXd> x, bool transposed) const {
+    forEachColumnBlock(x.cols(), 64, [&](int j0, int w) {
+        auto xs = x.middleCols(j0, w);
+        if (transposed)
+            factor_.triangularView<Eigen::Lower>().transpose().solveInPlace(xs);
+        else
+            factor_.triangularView<Eigen::Lower>().solveInPlace(xs);
+    });
+}
+
 Eigen::MatrixXd ElasticSolver::factorSolve(const Eigen::MatrixXd& rhs) const {
     requireResident("factorSolve");
     Eigen::MatrixXd x = withoutRigidMotions(rhs);
-    forEachColumnBlock(x.cols(), 64, [&](int j0, int w) {
-        auto xs = x.middleCols(j0, w);
-        factor_.triangularView<Eigen::Lower>().solveInPlace(xs);
-    });
+    solveWithFactorInPlace(x, false);
     return x;
 }
 
 Eigen::MatrixXd ElasticSolver::factorTransposeSolve(const Eigen::MatrixXd& rhs) const {
     requireResident("factorTransposeSolve");
     Eigen::MatrixXd x = rhs;
-    forEachColumnBlock(x.cols(), 64, [&](int j0, int w) {
-        auto xs = x.middleCols(j0, w);
-        factor_.triangularView<Eigen::Lower>().transpose().solveInPlace(xs);
-    });
+    solveWithFactorInPlace(x, true);
     return x;
 }
 
@@ -179,8 +183,10 @@ Eigen::VectorXd ElasticSolver::displacements(const Eigen::VectorXd& q) const {
 Eigen::VectorXd ElasticSolver::displacementsFromLoad(const Eigen::VectorXd& f) const {
     requireResident("displacementsFromLoad");
     const Eigen::VectorXd rhs = withoutRigidMotions(f);
-    Eigen::VectorXd u = factorTransposeSolve(factorSolve(rhs));
-    // Residual of K_R u = P f, formed from K (the factor overwrote K_R's upper triangle).
+    Eigen::VectorXd u = rhs;
+    solveWithFactorInPlace(u, false);
+    solveWithFactorInPlace(u, true);
+    // Residual of K_R u = P f, formed from K (factor_ holds L, not K_R).
     const Eigen::VectorXd residual =
         stiffness_ * u + gamma_ * rigidBasis_ * (rigidBasis_.transpose() * u) - rhs;
     const double relative = residual.norm() / std::max(rhs.norm(), std::numeric_limits<double>::min());

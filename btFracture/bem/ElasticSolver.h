@@ -92,6 +92,8 @@ public:
 private:
     void assembleAndFactor();
     void requireResident(const char* what) const;
+    // x <- L^-1 x, or L^-T x if transposed (K_R = L L^T), in blocks of 64 columns.
+    void solveWithFactorInPlace(Eigen::Ref<Eigen::MatrixXd> x, bool transposed) const;
 
     SurfaceMesh mesh_;
     Material material_;
