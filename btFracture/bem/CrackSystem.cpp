@@ -588,8 +588,8 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q) const {
 
 CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q, const Eigen::VectorXd& b) const {
     Solution s;
-    if (b.size() != solver_.stiffness().rows())
-        throw Error("CrackSystem::solve: expected " + std::to_string(solver_.stiffness().rows()) +
+    if (b.size() != 3 * solver_.mesh().nodeCount())
+        throw Error("CrackSystem::solve: expected " + std::to_string(3 * solver_.mesh().nodeCount()) +
                     " crack-free displacement values, got " + std::to_string(b.size()));
     if (assembledUnknowns_ == 0) {
         s.displacements = b;
@@ -626,7 +626,7 @@ CrackSystem::Solution CrackSystem::solve(const Eigen::VectorXd& q, const Eigen::
 
 CrackSystem::Solution CrackSystem::solveMonolithic(const Eigen::VectorXd& q) const {
     const Eigen::MatrixXd& D = crackCrackBlock();
-    const Eigen::MatrixXd& K = solver_.stiffness();
+    const Eigen::MatrixXd K = solver_.stiffness();
     const int n3 = static_cast<int>(K.rows()), k3 = 3 * assembledUnknowns_;
     const Eigen::MatrixXd& Q = solver_.rigidBasis();
     const Eigen::MatrixXd PC = solver_.withoutRigidMotions(surfaceCrackBlock());

@@ -29,7 +29,7 @@ void ElasticSolver::assembleAndFactor() {
     {
         BoundaryOperators ops = assembleBoundaryOperators(
             mesh_, {material_.shearModulus(), material_.poissonRatio()}, settings_.quadrature);
-        stiffness_ = std::move(ops.stiffness);
+        factor_ = std::move(ops.stiffness);
         tractionToLoad_ = ops.tractionToLoad.cast<float>();
     }
     // Rows of T scaled to unit length, so that the gauge fix below is well scaled at any body size
@@ -47,11 +47,12 @@ void ElasticSolver::assembleAndFactor() {
     // (K's null space): symmetric positive definite, so its Cholesky factor L serves the crack
     // Schur complement in the symmetric form D - (L^-1 P C)^T (L^-1 P C). The paper's Eq. 3
     // (K^T K + gamma T^T T) has the same solutions for loads free of rigid-motion work, at N^3
-    // more flops and the square of K's condition number (FORMULATION.md).
+    // more flops and the square of K's condition number (FORMULATION.md). K_R and L take K's
+    // lower triangle; K's strict upper triangle stays (K is symmetric) and its diagonal is kept
+    // aside, so that K itself costs no storage.
     timer.restart();
-    const Eigen::MatrixXd& K = stiffness_;
-    gamma_ = K.trace() / static_cast<double>(K.rows());
-    factor_ = K;
+    stiffnessDiagonal_ = factor_.diagonal();
+    gamma_ = factor_.trace() / static_cast<double>(factor_.rows());
     factor_.selfadjointView<Eigen::Lower>().rankUpdate(rigidBasis_, gamma_);
     timings_.regularisation = timer.seconds();
 
@@ -72,7 +73,7 @@ void ElasticSolver::assembleAndFactor() {
 }
 
 void ElasticSolver::releaseMatrices() {
-    stiffness_ = Eigen::MatrixXd();
+    stiffnessDiagonal_ = Eigen::VectorXd();
     tractionToLoad_ = decltype(tractionToLoad_)();
     factor_ = Eigen::MatrixXd();
 }
@@ -88,9 +89,20 @@ void ElasticSolver::requireResident(const char* what) const {
                     "-triangle mesh were released; call restoreMatrices()");
 }
 
-const Eigen::MatrixXd& ElasticSolver::stiffness() const {
+Eigen::MatrixXd ElasticSolver::stiffness() const {
     requireResident("stiffness");
-    return stiffness_;
+    Eigen::MatrixXd K = factor_.triangularView<Eigen::StrictlyUpper>();
+    K += K.transpose().eval();
+    K.diagonal() = stiffnessDiagonal_;
+    return K;
+}
+
+Eigen::VectorXd ElasticSolver::stiffnessTimes(const Eigen::VectorXd& x) const {
+    requireResident("stiffnessTimes");
+    Eigen::VectorXd y = stiffnessDiagonal_.cwiseProduct(x);
+    y.noalias() += factor_.triangularView<Eigen::StrictlyUpper>() * x;
+    y.noalias() += factor_.triangularView<Eigen::StrictlyUpper>().transpose() * x;
+    return y;
 }
 
 Eigen::VectorXd ElasticSolver::load(const Eigen::VectorXd& q) const {
@@ -188,7 +200,7 @@ Eigen::VectorXd ElasticSolver::displacementsFromLoad(const Eigen::VectorXd& f) c
     solveWithFactorInPlace(u, true);
     // Residual of K_R u = P f, formed from K (factor_ holds L, not K_R).
     const Eigen::VectorXd residual =
-        stiffness_ * u + gamma_ * rigidBasis_ * (rigidBasis_.transpose() * u) - rhs;
+        stiffnessTimes(u) + gamma_ * rigidBasis_ * (rigidBasis_.transpose() * u) - rhs;
     const double relative = residual.norm() / std::max(rhs.norm(), std::numeric_limits<double>::min());
     if (!u.allFinite() || relative > 1e-6) {
         std::ostringstream msg;
@@ -201,7 +213,8 @@ Eigen::VectorXd ElasticSolver::displacementsFromLoad(const Eigen::VectorXd& f) c
 }
 
 std::size_t ElasticSolver::matrixBytes() const {
-    return sizeof(double) * (stiffness_.size() + factor_.size()) + sizeof(float) * tractionToLoad_.size();
+    return sizeof(double) * (factor_.size() + stiffnessDiagonal_.size()) +
+           sizeof(float) * tractionToLoad_.size();
 }
 
 }  // namespace btfracture

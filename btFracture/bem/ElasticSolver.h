@@ -67,11 +67,13 @@ public:
     // equation, not the Dirichlet-to-Neumann map.)
     double strainEnergy(const Eigen::VectorXd& tractions, const Eigen::VectorXd& displacements) const;
 
-    // K (throws once the matrices were released: releaseMatrices).
-    const Eigen::MatrixXd& stiffness() const;
+    // K, formed from the factor's storage (O(n^2) bytes per call), and K x (both throw once the
+    // matrices were released: releaseMatrices).
+    Eigen::MatrixXd stiffness() const;
+    Eigen::VectorXd stiffnessTimes(const Eigen::VectorXd& x) const;
     // The load f = F q (3n) of P0 tractions q (3m [Pa]), in double from F's single-precision
     // entries: F only forms this product, so the rounding stays near 1e-7 of f (and F takes half
-    // the bytes; at 1,500 triangles 41 of the BEM's 124 MB). Throws if q carries net force or
+    // the bytes; at 1,500 triangles 41 of the BEM's 82 MB). Throws if q carries net force or
     // torque, as displacements() does.
     Eigen::VectorXd load(const Eigen::VectorXd& tractions) const;
     const Eigen::MatrixXd& regulariser() const { return rigidModes_; }  // T (6 x 3n), Eq. 1-2, unit rows
@@ -79,7 +81,7 @@ public:
     double regularisationWeight() const { return gamma_; }
     double reciprocalCondition() const { return rcond_; }
     const ElasticSolverTimings& timings() const { return timings_; }
-    // Bytes held by dense matrices (K, the Cholesky factor, F).
+    // Bytes held by dense matrices (the Cholesky factor with K, F).
     std::size_t matrixBytes() const;
 
     // K, F and the factor are a cache of the mesh: releaseMatrices frees them (the solves and
@@ -98,14 +100,14 @@ private:
     SurfaceMesh mesh_;
     Material material_;
     ElasticSolverSettings settings_;
-    Eigen::MatrixXd stiffness_;  // K (BoundaryOperators::stiffness)
+    Eigen::VectorXd stiffnessDiagonal_;  // K's diagonal (K's strict upper triangle: in factor_)
     Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> tractionToLoad_;  // F
     Eigen::MatrixXd rigidModes_;                                                            // T (6 x 3n)
     Eigen::MatrixXd rigidMotions_;                                                          // R (3n x 6)
     Eigen::MatrixXd rigidBasis_;       // Q (3n x 6), orthonormal, span R
     Eigen::MatrixXd gaugeFix_;         // (T R)^-1 T (6 x 3n)
     Eigen::MatrixXd netLoadOperator_;  // A (6 x 3m)
-    Eigen::MatrixXd factor_;           // lower Cholesky factor of K_R
+    Eigen::MatrixXd factor_;           // lower: Cholesky factor of K_R; strictly upper: K's
     double gamma_ = 0.0;
     double rcond_ = 0.0;
     ElasticSolverTimings timings_;

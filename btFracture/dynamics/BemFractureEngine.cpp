@@ -86,15 +86,19 @@ void releaseIdleMatrices(ResidentMatrices& resident, const BemFractureState* inU
                          const BemFractureState* justBroken, std::uint64_t step, double budgetMB) {
     std::vector<BemFractureState*> others;
     double total = 0.0;
+    int holding = 0;
     for (FractureState* state : resident.states) {
         auto* s = static_cast<BemFractureState*>(state);
         if (s == inUse || s->matrixBytes() == 0) continue;
         total += static_cast<double>(s->matrixBytes());
+        ++holding;
         if (s == justBroken || s->lastStep + kRecentSteps <= step) others.push_back(s);
     }
+    constexpr double kMB = 1024.0 * 1024.0;
+    logf(LogLevel::Debug, "BEM and crack matrices held by ", holding, inUse ? " other" : "",
+         " bodies: ", total / kMB, " MB (", others.size(), " of them may be released)");
     std::sort(others.begin(), others.end(),
               [](const BemFractureState* a, const BemFractureState* b) { return a->lastCall < b->lastCall; });
-    constexpr double kMB = 1024.0 * 1024.0;
     for (BemFractureState* s : others) {
         if (total <= budgetMB * kMB) break;
         const double bytes = static_cast<double>(s->matrixBytes());
@@ -660,6 +664,14 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
                      " crack front markers outside the kept fragment follow their coarse front freely");
         }
         s.bemSource = TriangleMesh();  // the solver is kept; a rebuild would start from the level set
+    } else if (s.solver->resident()) {
+        // The body is gone, replaced by its fragments: its matrices go now, not when the idle
+        // budget runs out (built again should it ever be called again).
+        const double bytes = static_cast<double>(s.matrixBytes());
+        s.solver->releaseMatrices();
+        s.fracture->releaseCrackSystem();
+        logf(LogLevel::Debug, body.name(), ": its BEM and crack matrices (", bytes / (1024.0 * 1024.0),
+             " MB) are released: it broke into fragments");
     }
     logf(LogLevel::Info, body.name(), ": ", report.seeds, " new cracks, ", report.steps.size(), " steps, ",
          outcome.fragments.size(), " fragments");

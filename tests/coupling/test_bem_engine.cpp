@@ -230,13 +230,15 @@ struct TwoSlabs {
 TEST(BemEngine, ReleasedMatricesAreRebuiltIdentically) {
     struct Run {
         FractureOutcome outcome;
-        int released = 0, rebuilt = 0;
+        int released = 0, rebuilt = 0, freedOnBreak = 0;
     };
     auto run = [](double budgetMB) {
         TwoSlabs slabs(budgetMB);
         auto& [engine, a, b, contact] = slabs;
         Run r;
         std::vector<std::string> messages;
+        const LogLevel level = logLevel();
+        setLogLevel(LogLevel::Debug);
         setLogSink([&](LogLevel, const std::string& m) { messages.push_back(m); });
         FractureStatistics stats;  // its steps: 10 apart, so no body counts as in lasting contact
         contact.impulse = 1e-3;    // builds the BEM, grows nothing
@@ -247,9 +249,11 @@ TEST(BemEngine, ReleasedMatricesAreRebuiltIdentically) {
         contact.impulse = 5.0;
         r.outcome = engine.fracture(a, {contact}, stats);
         setLogSink(nullptr);
+        setLogLevel(level);
         for (const std::string& m : messages) {
             r.released += m.find("are released to keep") != std::string::npos;
             r.rebuilt += m.find("assembled and factored again") != std::string::npos;
+            r.freedOnBreak += m.find("are released: it broke into fragments") != std::string::npos;
         }
         return r;
     };
@@ -258,6 +262,7 @@ TEST(BemEngine, ReleasedMatricesAreRebuiltIdentically) {
                 kept.outcome.crackTriangles, kept.outcome.fragments.size(), kept.outcome.maxLoadRatio);
     EXPECT_EQ(kept.released, 0);
     EXPECT_EQ(kept.rebuilt, 0);
+    EXPECT_EQ(kept.freedOnBreak, 0);  // a piece of > 95 % of A takes A's state, matrices and all
     EXPECT_EQ(released.released, 3);  // A's before B's call, B's before A's second, A's before its cut
     EXPECT_EQ(released.rebuilt, 1);
     EXPECT_GT(kept.outcome.maxLoadRatio, 1.0);  // the second strike grows cracks
@@ -266,6 +271,30 @@ TEST(BemEngine, ReleasedMatricesAreRebuiltIdentically) {
     ASSERT_EQ(kept.outcome.fragments.size(), released.outcome.fragments.size());
     for (std::size_t k = 0; k < kept.outcome.fragments.size(); ++k)
         EXPECT_EQ(kept.outcome.fragments[k].volume, released.outcome.fragments[k].volume) << "fragment " << k;
+}
+
+// A body that breaks apart (no piece of > 95 % of it takes its state over) frees its matrices at
+// once, whatever the budget: it is gone from the world.
+TEST(BemEngine, BodyThatBreaksApartFreesItsMatrices) {
+    TwoSlabs slabs(std::numeric_limits<double>::infinity());
+    auto& [engine, a, b, contact] = slabs;
+    contact.impulse = 50.0;  // shatters the slab
+    int freed = 0;
+    const LogLevel level = logLevel();
+    setLogLevel(LogLevel::Debug);
+    setLogSink([&](LogLevel, const std::string& m) {
+        freed += m.find("are released: it broke into fragments") != std::string::npos;
+    });
+    FractureStatistics stats;
+    const FractureOutcome outcome = engine.fracture(a, {contact}, stats);
+    setLogSink(nullptr);
+    setLogLevel(level);
+    const auto keeps = [](const FragmentSpec& f) { return f.cls == FragmentSpec::Class::KeepsParentSolver; };
+    std::printf("%zu fragments, a piece keeps the state: %d\n", outcome.fragments.size(),
+                int(std::any_of(outcome.fragments.begin(), outcome.fragments.end(), keeps)));
+    ASSERT_GE(outcome.fragments.size(), 2u);
+    // On another CPU's course a large piece may still take the state over: then it keeps them.
+    EXPECT_EQ(freed, std::any_of(outcome.fragments.begin(), outcome.fragments.end(), keeps) ? 0 : 1);
 }
 
 TEST(BemEngine, BodiesInLastingContactKeepTheirMatrices) {
