@@ -72,7 +72,17 @@ public:
     std::size_t matrixBytes() const {
         return (solver ? solver->matrixBytes() : 0) + (fracture ? fracture->crackSystemBytes() : 0);
     }
+
+    // Frees the BEM and crack matrices (assembled again at the next call); returns the bytes freed.
+    std::size_t releaseMatrices() {
+        const std::size_t bytes = matrixBytes();
+        solver->releaseMatrices();
+        fracture->releaseCrackSystem();
+        return bytes;
+    }
 };
+
+constexpr double kBytesPerMB = 1024.0 * 1024.0;
 
 // Bodies the engine was called for within this many steps keep their matrices whatever the
 // budget: a body in lasting contact is called every step, and releasing it between two calls
@@ -94,18 +104,15 @@ void releaseIdleMatrices(ResidentMatrices& resident, const BemFractureState* inU
         ++holding;
         if (s == justBroken || s->lastStep + kRecentSteps <= step) others.push_back(s);
     }
-    constexpr double kMB = 1024.0 * 1024.0;
     logf(LogLevel::Debug, "BEM and crack matrices held by ", holding, inUse ? " other" : "",
-         " bodies: ", total / kMB, " MB (", others.size(), " of them may be released)");
+         " bodies: ", total / kBytesPerMB, " MB (", others.size(), " of them may be released)");
     std::sort(others.begin(), others.end(),
               [](const BemFractureState* a, const BemFractureState* b) { return a->lastCall < b->lastCall; });
     for (BemFractureState* s : others) {
-        if (total <= budgetMB * kMB) break;
-        const double bytes = static_cast<double>(s->matrixBytes());
+        if (total <= budgetMB * kBytesPerMB) break;
+        const double bytes = static_cast<double>(s->releaseMatrices());
         total -= bytes;
-        s->solver->releaseMatrices();
-        s->fracture->releaseCrackSystem();
-        logf(LogLevel::Info, s->owner, ": its BEM and crack matrices (", bytes / kMB,
+        logf(LogLevel::Info, s->owner, ": its BEM and crack matrices (", bytes / kBytesPerMB,
              " MB) are released to keep bodies not called in the last ", kRecentSteps, " steps within ",
              budgetMB, " MB (idleMatrixBudgetMB); built again at its next call");
     }
@@ -667,10 +674,8 @@ FractureOutcome BemFractureEngine::fracture(btFractureRigidBody& body,
     } else if (s.solver->resident()) {
         // The body is gone, replaced by its fragments: its matrices go now, not when the idle
         // budget runs out (built again should it ever be called again).
-        const double bytes = static_cast<double>(s.matrixBytes());
-        s.solver->releaseMatrices();
-        s.fracture->releaseCrackSystem();
-        logf(LogLevel::Debug, body.name(), ": its BEM and crack matrices (", bytes / (1024.0 * 1024.0),
+        const double bytes = static_cast<double>(s.releaseMatrices());
+        logf(LogLevel::Debug, body.name(), ": its BEM and crack matrices (", bytes / kBytesPerMB,
              " MB) are released: it broke into fragments");
     }
     logf(LogLevel::Info, body.name(), ": ", report.seeds, " new cracks, ", report.steps.size(), " steps, ",
