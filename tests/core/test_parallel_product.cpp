@@ -2,6 +2,7 @@
 // transposedProduct (a^T b in fixed blocks on all cores): Eigen's product to rounding, and the
 // same bits on any thread count. transposedTimes (a^T x) and productInDouble (a q, a in single
 // precision): Eigen's single product bit for bit, on any thread count.
+// Eigen's cache sizes are the pinned ones, not the CPU's.
 #include <btFracture/core/Error.h>
 #include <btFracture/core/ParallelProduct.h>
 #include <btFracture/core/ThreadLimit.h>
@@ -69,4 +70,22 @@ TEST(ParallelProduct, MatrixVectorProductsAreEigensBitForBitOnAnyThreadCount) {
         }
     }
     EXPECT_THROW(transposedTimes(Eigen::MatrixXd::Zero(3, 2), Eigen::VectorXd::Zero(2)), Error);
+}
+
+TEST(ParallelProduct, EigenBlockingIsFixedNotTheCpus) {
+    // Eigen splits a product's depth in blocks sized by the L1 cache; the library pins the sizes
+    // (btFracture/CMakeLists.txt) instead of asking CPUID, so that a portable binary rounds the same
+    // on every CPU.
+    EXPECT_EQ(Eigen::l1CacheSize(), EIGEN_DEFAULT_L1_CACHE_SIZE);
+    EXPECT_EQ(Eigen::l2CacheSize(), EIGEN_DEFAULT_L2_CACHE_SIZE);
+    EXPECT_EQ(Eigen::l3CacheSize(), EIGEN_DEFAULT_L3_CACHE_SIZE);
+    // Why it matters: the same product with the depth blocks of a 32 KB L1 is not the same bits.
+    const Eigen::MatrixXd a = Eigen::MatrixXd::Random(64, 1400), b = Eigen::MatrixXd::Random(1400, 64);
+    const Eigen::MatrixXd pinned = a * b;
+    Eigen::setCpuCacheSizes(32 * 1024, EIGEN_DEFAULT_L2_CACHE_SIZE, EIGEN_DEFAULT_L3_CACHE_SIZE);
+    const Eigen::MatrixXd otherL1 = a * b;
+    Eigen::setCpuCacheSizes(EIGEN_DEFAULT_L1_CACHE_SIZE, EIGEN_DEFAULT_L2_CACHE_SIZE,
+                            EIGEN_DEFAULT_L3_CACHE_SIZE);
+    EXPECT_FALSE(pinned == otherL1);
+    EXPECT_LT((pinned - otherL1).norm(), 1e-12 * pinned.norm());
 }
